@@ -1,0 +1,48 @@
+// Copyright (c) 2026 VVM contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// compare_optimizers: one initial make_mesh_3 mesh, then each optimizer chain
+// on its own copy, measured in the same process. Command line in usage().
+
+#ifndef VVM_BENCHMARK_COMPARE_OPTIMIZERS_H
+#define VVM_BENCHMARK_COMPARE_OPTIMIZERS_H
+
+#include <cstddef>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace vvm_benchmark {
+
+struct Options
+{
+  std::string input;                   // a surface file, or sphere / cube / torus
+  std::size_t target_vertices = 10000; // --vertices
+  double features_angle = -1;          // --features-angle; < 0: not given
+  std::vector<std::string> chains;     // --chains
+  int repeat = 1;                      // --repeat
+  int threads = 0;                     // --threads; 0: all cores
+  std::string json_file;               // --json
+  std::string out_dir;                 // --out-dir
+  unsigned int seed = 0;               // --seed
+};
+
+// A user error (bad command line, unreadable or invalid input): printed and exit code 2.
+struct Input_error : std::runtime_error
+{
+  using std::runtime_error::runtime_error;
+};
+
+// The chains run by default, in order.
+std::vector<std::string> default_chains();
+
+// Built-in domains, meshed from their implicit function (sphere, torus).
+bool is_implicit_domain_name(const std::string& name);
+int run_implicit_domain(const Options& options);
+
+// Closed triangle surfaces read from a file, and the built-in polyhedral cube.
+int run_polyhedral_domain(const Options& options);
+
+} // namespace vvm_benchmark
+
+#endif // VVM_BENCHMARK_COMPARE_OPTIMIZERS_H
