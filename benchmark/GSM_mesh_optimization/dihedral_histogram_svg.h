@@ -20,7 +20,7 @@ namespace vvm_benchmark {
 inline void write_dihedral_histogram_svg(std::ostream& os, const std::string& title,
                                          const CGAL::GSM_mesh_optimization::Mesh_quality_statistics& q)
 {
-  const double width = 720, height = 360, left = 60, right = 20, top = 50, bottom = 40;
+  const double width = 720, height = 370, left = 60, right = 20, top = 50, bottom = 50;
   const double plot_w = width - left - right, plot_h = height - top - bottom;
   std::size_t max_count = 1;
   for(std::size_t c : q.dihedral_angle_histogram) max_count = (std::max)(max_count, c);
@@ -34,7 +34,11 @@ inline void write_dihedral_histogram_svg(std::ostream& os, const std::string& ti
   os.precision(4);
   os << "<text x=\"" << left << "\" y=\"38\">tets " << q.number_of_cells << ", min dihedral "
      << q.min_dihedral_angle << ", max " << q.max_dihedral_angle << ", tets with min &lt; 30: "
-     << q.n_min_dihedral_below[2] << " (grey: all angles, red: min angle per tet, sqrt scale)</text>\n";
+     << q.n_min_dihedral_below[2] << "</text>\n"
+     << "<text x=\"" << left + plot_w << "\" y=\"" << top + 12
+     << "\" text-anchor=\"end\">grey: all dihedral angles; red: smallest angle of each tet</text>\n"
+     << "<text x=\"" << left + plot_w << "\" y=\"" << top + 28
+     << "\" text-anchor=\"end\">count on a square-root scale</text>\n";
   for(int pass = 0; pass < 2; ++pass) {
     const auto& h = pass == 0 ? q.dihedral_angle_histogram : q.min_dihedral_angle_histogram;
     const char* colour = pass == 0 ? "#9a9a9a" : "#d62728";
@@ -51,6 +55,8 @@ inline void write_dihedral_histogram_svg(std::ostream& os, const std::string& ti
   for(int deg = 0; deg <= 180; deg += 30)
     os << "<text x=\"" << left + deg * bin_w << "\" y=\"" << top + plot_h + 16
        << "\" text-anchor=\"middle\">" << deg << "</text>\n";
+  os << "<text x=\"" << left + plot_w / 2 << "\" y=\"" << height - 6
+     << "\" text-anchor=\"middle\">dihedral angle (degrees)</text>\n";
   os << "<text x=\"" << left - 8 << "\" y=\"" << top + 4 << "\" text-anchor=\"end\">" << max_count
      << "</text>\n<text x=\"" << left - 8 << "\" y=\"" << top + plot_h
      << "\" text-anchor=\"end\">0</text>\n</svg>\n";

@@ -1,0 +1,17 @@
+#!/usr/bin/env bash
+# Installs what VVM needs to build, test and benchmark on Debian 12 (bookworm).
+set -euo pipefail
+packages=(g++ make cmake libcgal-dev libeigen3-dev libtbb-dev libboost-dev liblbfgspp-dev python3-meshio)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "install_dependencies: all packages present"
+  exit 0
+fi
+sudo=""
+[ "$(id -u)" -eq 0 ] || sudo="sudo"
+echo "install_dependencies: installing ${missing[*]}"
+$sudo apt-get update -qq
+DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"
