@@ -32,18 +32,21 @@ namespace {
 const char* usage =
     "usage: compare_optimizers INPUT [--vertices N] [--features-angle DEG] [--chains c1,c2,...]\n"
     "                          [--repeat N] [--threads N] [--json FILE] [--out-dir DIR] [--seed N]\n"
+    "                          [--verbose]\n"
     "  INPUT  a closed triangle surface (OFF, OBJ, PLY, STL, ...) or one of sphere, cube, torus\n"
     "  --vertices N        target vertex count of the initial mesh, within 10% (default 10000)\n"
     "  --features-angle D  protect sharp edges whose dihedral angle deviates by more than D\n"
     "                      degrees (surfaces only; default 0 = none, 60 for cube)\n"
-    "  --chains LIST       comma-separated chains of init, lloyd, odt, perturb, exude joined by '+'\n"
+    "  --chains LIST       comma-separated chains of init, lloyd, odt, perturb, exude, gsm, gsm-esm\n"
+    "                      joined by '+'\n"
     "                      (default: init,lloyd,odt,perturb,exude,perturb+exude,\n"
     "                       lloyd+perturb+exude,odt+perturb+exude)\n"
     "  --repeat N          runs per chain; optimizer times are medians (default 1)\n"
     "  --threads N         maximum number of threads (default: all cores)\n"
     "  --json FILE         write one JSON line per chain\n"
     "  --out-dir DIR       write <model>_<chain>.mesh, .vtu and a dihedral histogram .svg\n"
-    "  --seed N            random seed of the mesher and the optimizers (default 0)\n";
+    "  --seed N            random seed of the mesher and the optimizers (default 0)\n"
+    "  --verbose           progress of the optimizers that report it (gsm)\n";
 
 template <class T>
 T parse_number(const std::string& option, const std::string& text)
@@ -88,6 +91,8 @@ Options parse_command_line(int argc, char** argv)
       o.out_dir = value();
     } else if(arg == "--seed") {
       o.seed = parse_number<unsigned int>(arg, value());
+    } else if(arg == "--verbose") {
+      o.verbose = true;
     } else if(arg == "--help" || arg == "-h") {
       std::cout << usage;
       std::exit(0);

@@ -25,6 +25,7 @@ struct Options
   std::string json_file;               // --json
   std::string out_dir;                 // --out-dir
   unsigned int seed = 0;               // --seed
+  bool verbose = false;                // --verbose
 };
 
 // A user error (bad command line, unreadable or invalid input): printed and exit code 2.

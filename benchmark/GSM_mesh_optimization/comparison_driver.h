@@ -22,6 +22,7 @@
 #include <CGAL/Random.h>
 #include <CGAL/Real_timer.h>
 #include <CGAL/exude_mesh_3.h>
+#include <CGAL/gsm_optimize_mesh_3.h>
 #include <CGAL/lloyd_optimize_mesh_3.h>
 #include <CGAL/odt_optimize_mesh_3.h>
 #include <CGAL/perturb_mesh_3.h>
@@ -55,14 +56,14 @@ inline const char* return_code_name(CGAL::Mesh_optimization_return_code c)
 // "odt+perturb+exude" -> {"odt", "perturb", "exude"}; "init" -> {}
 inline std::vector<std::string> chain_steps(const std::string& chain)
 {
-  static const std::vector<std::string> known{"lloyd", "odt", "perturb", "exude"};
+  static const std::vector<std::string> known{"lloyd", "odt", "perturb", "exude", "gsm", "gsm-esm"};
   std::vector<std::string> steps;
   if(chain == "init") return steps;
   std::stringstream ss(chain);
   for(std::string step; std::getline(ss, step, '+');) {
     if(std::find(known.begin(), known.end(), step) == known.end())
       throw Input_error("unknown optimizer '" + step + "' in chain '" + chain +
-                        "' (known: init, lloyd, odt, perturb, exude, joined by '+')");
+                        "' (known: init, lloyd, odt, perturb, exude, gsm, gsm-esm, joined by '+')");
     steps.push_back(step);
   }
   if(steps.empty()) throw Input_error("empty chain");
@@ -171,6 +172,12 @@ private:
           code = CGAL::lloyd_optimize_mesh_3(c3t3, domain_);
         else if(step == "odt")
           code = CGAL::odt_optimize_mesh_3(c3t3, domain_);
+        else if(step == "gsm" || step == "gsm-esm")
+          code = CGAL::gsm_optimize_mesh_3(
+              c3t3, domain_,
+              GSM::parameters::energy(step == "gsm" ? GSM::Shape_matching_energy::GSM
+                                                    : GSM::Shape_matching_energy::ESM,
+                                      CGAL::parameters::verbose(options_.verbose)));
         else if(step == "perturb")
           code = CGAL::perturb_mesh_3(c3t3, domain_, params::sliver_bound = 0);
         else

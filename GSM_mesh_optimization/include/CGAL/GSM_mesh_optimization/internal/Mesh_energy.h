@@ -1,0 +1,111 @@
+// Copyright (c) 2026 VVM contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The shape matching energy of the cells of a C3T3, measured in the metric,
+// and the running mean that vertex moves and flips must lower (eq. 3.9).
+
+#ifndef CGAL_GSM_MESH_OPTIMIZATION_INTERNAL_MESH_ENERGY_H
+#define CGAL_GSM_MESH_OPTIMIZATION_INTERNAL_MESH_ENERGY_H
+
+#include <CGAL/GSM_mesh_optimization/internal/Metric_field.h>
+#include <CGAL/GSM_mesh_optimization/shape_matching_energy.h>
+
+#include <CGAL/number_utils.h>
+
+#include <Eigen/Core>
+
+#include <array>
+
+namespace CGAL {
+namespace GSM_mesh_optimization {
+namespace internal {
+
+template <class C3T3>
+class Mesh_energy
+{
+public:
+  typedef typename C3T3::Triangulation Tr;
+  typedef typename Tr::Vertex_handle Vertex_handle;
+  typedef typename Tr::Cell_handle Cell_handle;
+  typedef typename Tr::Geom_traits::Point_3 Bare_point;
+
+  Mesh_energy(const C3T3& c3t3, const Metric_field& metric, Shape_matching_energy energy)
+    : c3t3_(c3t3), metric_(metric), energy_(energy)
+  {}
+
+  Eigen::Vector3d position(const Vertex_handle& v) const
+  {
+    const auto& p = c3t3_.triangulation().point(v);
+    return Eigen::Vector3d(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+  }
+  static Eigen::Vector3d to_eigen(const Bare_point& p)
+  {
+    return Eigen::Vector3d(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+  }
+
+  const Metric_field& metric() const { return metric_; }
+  Shape_matching_energy energy_kind() const { return energy_; }
+
+  /// energy of the tetrahedron with these corners, mapped by B at its centroid
+  double tetrahedron(const Eigen::Vector3d& p0, const Eigen::Vector3d& p1, const Eigen::Vector3d& p2,
+                     const Eigen::Vector3d& p3) const
+  {
+    if(metric_.is_constant()) {
+      const Eigen::Matrix3d B = metric_(p0);
+      return tetrahedron_energy(energy_, B * p0, B * p1, B * p2, B * p3);
+    }
+    const Eigen::Matrix3d B = metric_(0.25 * (p0 + p1 + p2 + p3));
+    return tetrahedron_energy(energy_, B * p0, B * p1, B * p2, B * p3);
+  }
+
+  double cell(const Cell_handle& c) const
+  {
+    return tetrahedron(position(c->vertex(0)), position(c->vertex(1)), position(c->vertex(2)),
+                       position(c->vertex(3)));
+  }
+
+  /// energy of cell `c` with the vertex `v` of it placed at `x`
+  double cell(const Cell_handle& c, const Vertex_handle& v, const Eigen::Vector3d& x) const
+  {
+    std::array<Eigen::Vector3d, 4> p;
+    for(int i = 0; i < 4; ++i) p[i] = c->vertex(i) == v ? x : position(c->vertex(i));
+    return tetrahedron(p[0], p[1], p[2], p[3]);
+  }
+
+  /// derivatives of the energy of cell `c` with respect to its vertex `v`, placed at `x`
+  Energy_derivatives cell_derivatives(const Cell_handle& c, const Vertex_handle& v,
+                                      const Eigen::Vector3d& x) const
+  {
+    std::array<Eigen::Vector3d, 3> others;
+    Eigen::Vector3d centroid = x;
+    for(int i = 0, k = 0; i < 4; ++i)
+      if(c->vertex(i) != v) {
+        others[k] = position(c->vertex(i));
+        centroid += others[k++];
+      }
+    const Eigen::Matrix3d B = metric_(0.25 * centroid);
+    return tetrahedron_energy_derivatives(energy_, B * x, B * others[0], B * others[1], B * others[2])
+        .mapped_back(B);
+  }
+
+  /// sum and number of the energies of the cells in the complex
+  std::pair<double, std::size_t> total() const
+  {
+    double sum = 0;
+    std::size_t n = 0;
+    for(auto c = c3t3_.cells_in_complex_begin(); c != c3t3_.cells_in_complex_end(); ++c, ++n)
+      sum += cell(c);
+    return {sum, n};
+  }
+
+private:
+  const C3T3& c3t3_;
+  const Metric_field& metric_;
+  Shape_matching_energy energy_;
+};
+
+} // namespace internal
+} // namespace GSM_mesh_optimization
+} // namespace CGAL
+
+#endif // CGAL_GSM_MESH_OPTIMIZATION_INTERNAL_MESH_ENERGY_H

@@ -1,0 +1,90 @@
+// Copyright (c) 2026 VVM contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The map B(x) into the isotropic space where the GSM template is the regular
+// tetrahedron of edge 1: I / a for a uniform edge length a, I / h(x) for a
+// sizing field, M(x)^{1/2} for an anisotropic metric M.
+
+#ifndef CGAL_GSM_MESH_OPTIMIZATION_INTERNAL_METRIC_FIELD_H
+#define CGAL_GSM_MESH_OPTIMIZATION_INTERNAL_METRIC_FIELD_H
+
+#include <Eigen/Core>
+#include <Eigen/Eigenvalues>
+
+#include <cmath>
+#include <functional>
+#include <sstream>
+#include <stdexcept>
+
+namespace CGAL {
+namespace GSM_mesh_optimization {
+namespace internal {
+
+class Metric_field
+{
+public:
+  /// uniform edge length `a`
+  static Metric_field uniform(double a)
+  {
+    if(!(a > 0) || !std::isfinite(a))
+      throw std::invalid_argument("GSM: the template edge length must be positive and finite");
+    Metric_field m;
+    m.constant_B_ = Eigen::Matrix3d::Identity() / a;
+    return m;
+  }
+
+  /// edge length `h(x)`
+  static Metric_field sizing(std::function<double(const Eigen::Vector3d&)> h)
+  {
+    Metric_field m;
+    m.B_ = [h](const Eigen::Vector3d& x) -> Eigen::Matrix3d {
+      const double s = h(x);
+      if(!(s > 0) || !std::isfinite(s)) {
+        std::ostringstream os;
+        os << "GSM: the sizing field is " << s << " at (" << x.transpose()
+           << "); it must be positive and finite";
+        throw std::invalid_argument(os.str());
+      }
+      return Eigen::Matrix3d::Identity() / s;
+    };
+    return m;
+  }
+
+  /// metric `M(x)`, symmetric positive definite
+  static Metric_field anisotropic(std::function<Eigen::Matrix3d(const Eigen::Vector3d&)> M)
+  {
+    Metric_field m;
+    m.B_ = [M](const Eigen::Vector3d& x) -> Eigen::Matrix3d { return square_root(M(x), x); };
+    return m;
+  }
+
+  bool is_constant() const { return !B_; }
+  Eigen::Matrix3d operator()(const Eigen::Vector3d& x) const { return B_ ? B_(x) : constant_B_; }
+
+  /// M^{1/2} of a symmetric positive definite M; anything else is an error
+  static Eigen::Matrix3d square_root(const Eigen::Matrix3d& M, const Eigen::Vector3d& x)
+  {
+    const bool finite = M.allFinite();
+    const bool symmetric = finite && (M - M.transpose()).norm() <= 1e-9 * M.norm();
+    Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig;
+    if(symmetric) eig.compute(M);
+    if(!symmetric || eig.info() != Eigen::Success || !(eig.eigenvalues().minCoeff() > 0)) {
+      std::ostringstream os;
+      os << "GSM: the metric at (" << x.transpose()
+         << ") is not a finite symmetric positive definite matrix:\n" << M;
+      throw std::invalid_argument(os.str());
+    }
+    return eig.eigenvectors() * eig.eigenvalues().cwiseSqrt().asDiagonal() *
+           eig.eigenvectors().transpose();
+  }
+
+private:
+  Eigen::Matrix3d constant_B_ = Eigen::Matrix3d::Identity();
+  std::function<Eigen::Matrix3d(const Eigen::Vector3d&)> B_;
+};
+
+} // namespace internal
+} // namespace GSM_mesh_optimization
+} // namespace CGAL
+
+#endif // CGAL_GSM_MESH_OPTIMIZATION_INTERNAL_METRIC_FIELD_H

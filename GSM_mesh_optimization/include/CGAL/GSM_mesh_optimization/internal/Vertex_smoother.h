@@ -1,0 +1,352 @@
+// Copyright (c) 2026 VVM contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// GSM vertex smoothing (dissertation section 3.3.1 and 3.3.3): per vertex, a
+// Newton direction h^-1 g of the energy of its incident cells and a
+// backtracking line search from the largest move its one-ring allows. A move is
+// kept only if no cell inverts (nor the convex hull stops being convex) and the
+// one-ring energy decreases. Surface vertices move in their tangent plane and
+// are projected back onto the domain's surface, on their own patch; feature
+// curve vertices move along their curve; corners never move.
+
+#ifndef CGAL_GSM_MESH_OPTIMIZATION_INTERNAL_VERTEX_SMOOTHER_H
+#define CGAL_GSM_MESH_OPTIMIZATION_INTERNAL_VERTEX_SMOOTHER_H
+
+#include <CGAL/GSM_mesh_optimization/internal/Mesh_energy.h>
+
+#include <CGAL/Mesh_3/Has_features.h>
+#include <CGAL/enum.h>
+
+#include <Eigen/Cholesky>
+#include <Eigen/Core>
+
+#include <algorithm>
+#include <cmath>
+#include <tuple>
+#include <type_traits>
+#include <vector>
+
+namespace CGAL {
+namespace GSM_mesh_optimization {
+namespace internal {
+
+template <class C3T3, class MeshDomain>
+class Vertex_smoother
+{
+public:
+  typedef typename C3T3::Triangulation Tr;
+  typedef typename Tr::Geom_traits GT;
+  typedef typename GT::Point_3 Bare_point;
+  typedef typename GT::Vector_3 Vector_3;
+  typedef typename GT::Segment_3 Segment_3;
+  typedef typename Tr::Point Weighted_point;
+  typedef typename Tr::Vertex_handle Vertex_handle;
+  typedef typename Tr::Cell_handle Cell_handle;
+  typedef typename Tr::Facet Facet;
+  typedef typename C3T3::Surface_patch_index Surface_patch_index;
+  typedef typename C3T3::Curve_index Curve_index;
+  typedef Mesh_energy<C3T3> Energy;
+
+  // A candidate vertex: where it is allowed to go and what its move is worth.
+  struct Ring
+  {
+    Vertex_handle v;
+    int dimension = 3;
+    std::vector<Cell_handle> finite_cells, complex_cells, infinite_cells;
+    double max_neighbor_distance = 0;
+    Eigen::Vector3d normal = Eigen::Vector3d::Zero(); // surface vertices
+    Surface_patch_index patch = Surface_patch_index();
+    std::vector<Vertex_handle> curve_neighbors;       // feature-curve vertices
+    Curve_index curve = Curve_index();
+  };
+
+  Vertex_smoother(C3T3& c3t3, const MeshDomain* domain, const Energy& energy, bool freeze_boundary)
+    : c3t3_(c3t3), tr_(c3t3.triangulation()), domain_(domain), energy_(energy),
+      freeze_boundary_(freeze_boundary)
+  {}
+
+  /// lowest vertex dimension that may move (3: interior only)
+  int lowest_movable_dimension() const
+  {
+    if(freeze_boundary_ || domain_ == nullptr) return 3;
+    return Mesh_3::internal::Has_features<MeshDomain>::value ? 1 : 2;
+  }
+
+  bool is_movable(const Vertex_handle& v) const
+  {
+    return !tr_.is_infinite(v) && v->in_dimension() >= lowest_movable_dimension() &&
+           v->in_dimension() <= 3;
+  }
+
+  /// collects the one-ring of `v`; false if it has no cell in the complex
+  bool make_ring(const Vertex_handle& v, Ring& r) const
+  {
+    r = Ring();
+    r.v = v;
+    r.dimension = v->in_dimension();
+    std::vector<Cell_handle> cells;
+    tr_.incident_cells(v, std::back_inserter(cells));
+    const Eigen::Vector3d x = energy_.position(v);
+    for(const Cell_handle& c : cells) {
+      if(tr_.is_infinite(c)) {
+        r.infinite_cells.push_back(c);
+        continue;
+      }
+      r.finite_cells.push_back(c);
+      if(c3t3_.is_in_complex(c)) r.complex_cells.push_back(c);
+      for(int i = 0; i < 4; ++i)
+        if(c->vertex(i) != v)
+          r.max_neighbor_distance = (std::max)(r.max_neighbor_distance, (energy_.position(c->vertex(i)) - x).norm());
+    }
+    if(r.complex_cells.empty()) return false;
+    if(r.dimension == 2) return surface_frame(r);
+    if(r.dimension == 1) return curve_frame(r);
+    return true;
+  }
+
+  /// sum of the energies of the complex cells of the ring with `v` at `x`
+  double ring_energy(const Ring& r, const Eigen::Vector3d& x) const
+  {
+    double e = 0;
+    for(const Cell_handle& c : r.complex_cells) e += energy_.cell(c, r.v, x);
+    return e;
+  }
+
+  /// the Newton step h^-1 g restricted to the vertex's degrees of freedom,
+  /// clipped to the largest move of the one-ring (the paper's alpha_init); zero if none
+  Eigen::Vector3d newton_step(const Ring& r, bool& is_descent) const
+  {
+    const Eigen::Vector3d x = energy_.position(r.v);
+    Energy_derivatives d;
+    for(const Cell_handle& c : r.complex_cells) d += energy_.cell_derivatives(c, r.v, x);
+    Eigen::Vector3d step = Eigen::Vector3d::Zero();
+    is_descent = false;
+    if(!d.gradient.allFinite() || !d.hessian.allFinite()) return step;
+
+    if(r.dimension == 3) {
+      Eigen::LLT<Eigen::Matrix3d> llt(d.hessian);
+      if(llt.info() == Eigen::Success) {
+        step = llt.solve(d.gradient);
+        is_descent = true;
+      } else
+        step = d.gradient;
+    } else if(r.dimension == 2) {
+      // tangent plane basis
+      Eigen::Vector3d t1 = r.normal.unitOrthogonal(), t2 = r.normal.cross(t1);
+      Eigen::Matrix<double, 3, 2> T;
+      T << t1, t2;
+      const Eigen::Vector2d g2 = T.transpose() * d.gradient;
+      const Eigen::Matrix2d h2 = T.transpose() * d.hessian * T;
+      Eigen::LLT<Eigen::Matrix2d> llt(h2);
+      if(llt.info() == Eigen::Success) {
+        step = T * llt.solve(g2);
+        is_descent = true;
+      } else
+        step = T * g2;
+    } else {
+      const Eigen::Vector3d t = curve_tangent(r);
+      const double g1 = t.dot(d.gradient), h1 = t.dot(d.hessian * t);
+      if(h1 > 0) {
+        step = (g1 / h1) * t;
+        is_descent = true;
+      } else
+        step = g1 * t;
+    }
+    const double n = step.norm();
+    if(!(n > 0) || !std::isfinite(n)) return Eigen::Vector3d::Zero();
+    if(n > r.max_neighbor_distance) step *= r.max_neighbor_distance / n;
+    return step;
+  }
+
+  /// tries to move the vertex of `r`; true if it moved
+  bool smooth(const Ring& r)
+  {
+    bool is_descent;
+    const Eigen::Vector3d step = newton_step(r, is_descent);
+    if(step.isZero()) return false;
+    const Eigen::Vector3d x0 = energy_.position(r.v);
+    const double e0 = ring_energy(r, x0);
+    const double tiny = 1e-12 * (std::max)(1., std::abs(e0));
+    double alpha = 1;
+    for(int k = 0; k < max_backtracking_steps; ++k, alpha *= 0.5) {
+      for(double sign : {1., -1.}) {
+        if(sign < 0 && is_descent) continue; // the Newton direction descends: no need to look back
+        Bare_point p;
+        if(!candidate(r, x0 - sign * alpha * step, p)) continue;
+        const Eigen::Vector3d x = Energy::to_eigen(p);
+        if(!is_valid_position(r, p)) continue;
+        const double e = ring_energy(r, x);
+        if(e < e0 - tiny) {
+          move(r.v, p);
+          last_energy_change_ = e - e0;
+          return true;
+        }
+      }
+    }
+    return false;
+  }
+
+  double last_energy_change() const { return last_energy_change_; }
+
+  /// no finite incident cell inverts, and the convex hull stays convex around `v`
+  bool is_valid_position(const Ring& r, const Bare_point& p) const
+  {
+    for(const Cell_handle& c : r.finite_cells) {
+      Bare_point q[4];
+      for(int i = 0; i < 4; ++i) q[i] = c->vertex(i) == r.v ? p : bare(c->vertex(i));
+      if(CGAL::orientation(q[0], q[1], q[2], q[3]) != CGAL::POSITIVE) return false;
+    }
+    for(const Cell_handle& c : r.infinite_cells) {
+      // hull facet f of c, the interior witness w beyond it, and the hull
+      // vertices d across its edges: every d must lie strictly on w's side of f
+      const int inf = c->index(tr_.infinite_vertex());
+      Bare_point f[3];
+      for(int k = 0; k < 3; ++k) {
+        const Vertex_handle u = c->vertex((inf + 1 + k) & 3);
+        f[k] = u == r.v ? p : bare(u);
+      }
+      const Cell_handle inside = c->neighbor(inf);
+      const Vertex_handle w = inside->vertex(inside->index(c));
+      const CGAL::Orientation side = CGAL::orientation(f[0], f[1], f[2], bare(w));
+      if(side == CGAL::COPLANAR) return false;
+      for(int j = 0; j < 4; ++j) {
+        if(j == inf) continue;
+        const Cell_handle nb = c->neighbor(j);
+        const Vertex_handle d = nb->vertex(nb->index(c));
+        if(CGAL::orientation(f[0], f[1], f[2], d == r.v ? p : bare(d)) != side) return false;
+      }
+    }
+    return true;
+  }
+
+private:
+  static constexpr int max_backtracking_steps = 12;
+
+  Bare_point bare(const Vertex_handle& v) const
+  {
+    return tr_.geom_traits().construct_point_3_object()(tr_.point(v));
+  }
+
+  void move(const Vertex_handle& v, const Bare_point& p)
+  {
+    v->set_point(Weighted_point(p, tr_.point(v).weight()));
+  }
+
+  // the point the vertex of `r` would take for the unconstrained target `x`
+  bool candidate(const Ring& r, const Eigen::Vector3d& x, Bare_point& p) const
+  {
+    p = Bare_point(x[0], x[1], x[2]);
+    if(r.dimension == 3) return true;
+    if(r.dimension == 2) return project_on_surface(r, p);
+    return project_on_curve(r, p);
+  }
+
+  // --- surface vertices -------------------------------------------------------
+
+  // normal of the vertex: area-weighted normals of its surface facets, all
+  // oriented from the cell of larger subdomain index
+  bool surface_frame(Ring& r) const
+  {
+    std::vector<Facet> facets;
+    c3t3_.triangulation().finite_incident_facets(r.v, std::back_inserter(facets));
+    bool has_patch = false;
+    for(const Facet& f : facets) {
+      if(!c3t3_.is_in_complex(f)) continue;
+      const Surface_patch_index patch = c3t3_.surface_patch_index(f);
+      if(!has_patch) {
+        r.patch = patch;
+        has_patch = true;
+      } else if(!(patch == r.patch))
+        return false; // on two patches: it sits on a feature the domain did not protect
+      Facet g = f;
+      const Facet m = tr_.mirror_facet(f);
+      if(!tr_.is_infinite(m.first) && c3t3_.subdomain_index(m.first) > c3t3_.subdomain_index(f.first)) g = m;
+      const Eigen::Vector3d a = energy_.position(g.first->vertex((g.second + 1) & 3));
+      const Eigen::Vector3d b = energy_.position(g.first->vertex((g.second + 2) & 3));
+      const Eigen::Vector3d c = energy_.position(g.first->vertex((g.second + 3) & 3));
+      const Eigen::Vector3d inner = energy_.position(g.first->vertex(g.second));
+      Eigen::Vector3d n = (b - a).cross(c - a);
+      if(n.dot(inner - a) > 0) n = -n;
+      r.normal += n;
+    }
+    const double len = r.normal.norm();
+    if(!has_patch || !(len > 0)) return false;
+    r.normal /= len;
+    return true;
+  }
+
+  // intersection of the domain's surface with the normal segment through `p`,
+  // accepted only on the vertex's own patch
+  bool project_on_surface(const Ring& r, Bare_point& p) const
+  {
+    const double h = r.max_neighbor_distance;
+    const Vector_3 n(r.normal[0] * h, r.normal[1] * h, r.normal[2] * h);
+    const Segment_3 s(p - n, p + n);
+    const typename MeshDomain::Intersection i = domain_->construct_intersection_object()(s);
+    if(std::get<2>(i) != 2) return false;
+    if(!(domain_->surface_patch_index(std::get<1>(i)) == r.patch)) return false;
+    p = std::get<0>(i);
+    return true;
+  }
+
+  // --- feature-curve vertices -------------------------------------------------
+
+  bool curve_frame(Ring& r) const
+  {
+    if constexpr(Mesh_3::internal::Has_features<MeshDomain>::value) {
+      std::vector<Vertex_handle> adjacent;
+      tr_.finite_adjacent_vertices(r.v, std::back_inserter(adjacent));
+      for(const Vertex_handle& w : adjacent)
+        if(c3t3_.is_in_complex(r.v, w)) r.curve_neighbors.push_back(w);
+      if(r.curve_neighbors.size() != 2) return false;
+      r.curve = c3t3_.curve_index(r.v, r.curve_neighbors[0]);
+      return r.curve == c3t3_.curve_index(r.v, r.curve_neighbors[1]);
+    } else
+      return false;
+  }
+
+  Eigen::Vector3d curve_tangent(const Ring& r) const
+  {
+    const Eigen::Vector3d t =
+        energy_.position(r.curve_neighbors[1]) - energy_.position(r.curve_neighbors[0]);
+    return t.normalized();
+  }
+
+  // the point of the curve at the arc length from the vertex that matches the
+  // displacement to `p` along the tangent, strictly between the two neighbors
+  bool project_on_curve(const Ring& r, Bare_point& p) const
+  {
+    if constexpr(Mesh_3::internal::Has_features<MeshDomain>::value) {
+      const Bare_point o = bare(r.v);
+      const Eigen::Vector3d t = curve_tangent(r);
+      const double s = t.dot(Energy::to_eigen(p) - Energy::to_eigen(o));
+      // signed arc lengths to the two neighbors (on a cycle, the shorter way)
+      const double d0 = CGAL::to_double(domain_->signed_geodesic_distance(o, bare(r.curve_neighbors[0]), r.curve));
+      const double d1 = CGAL::to_double(domain_->signed_geodesic_distance(o, bare(r.curve_neighbors[1]), r.curve));
+      const double lo = (std::min)(d0, d1), hi = (std::max)(d0, d1);
+      if(!(lo < 0 && hi > 0)) return false;
+      // the tangent points from neighbor 0 to neighbor 1: orient s with the arc lengths
+      const double arc = d1 > d0 ? s : -s;
+      if(!(arc > 0.9 * lo && arc < 0.9 * hi)) return false;
+      p = domain_->construct_point_on_curve(o, r.curve, arc);
+      return true;
+    } else {
+      CGAL_USE(r);
+      CGAL_USE(p);
+      return false;
+    }
+  }
+
+  C3T3& c3t3_;
+  Tr& tr_;
+  const MeshDomain* domain_;
+  const Energy& energy_;
+  bool freeze_boundary_;
+  double last_energy_change_ = 0;
+};
+
+} // namespace internal
+} // namespace GSM_mesh_optimization
+} // namespace CGAL
+
+#endif // CGAL_GSM_MESH_OPTIMIZATION_INTERNAL_VERTEX_SMOOTHER_H

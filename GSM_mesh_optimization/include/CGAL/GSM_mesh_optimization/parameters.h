@@ -1,0 +1,67 @@
+// Copyright (c) 2026 VVM contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Named parameters of GSM_mesh_optimization that CGAL's central list does not
+// have. CGAL 5.5.1 offers no hook to add names to CGAL::parameters, so they
+// live here; each has an overload that appends it to an existing pack:
+//
+//   namespace GSM = CGAL::GSM_mesh_optimization;
+//   CGAL::gsm_optimize_mesh_3(c3t3, domain,
+//       GSM::parameters::freeze_boundary(true,
+//           CGAL::parameters::number_of_iterations(20).do_flip(false)));
+
+#ifndef CGAL_GSM_MESH_OPTIMIZATION_PARAMETERS_H
+#define CGAL_GSM_MESH_OPTIMIZATION_PARAMETERS_H
+
+#include <CGAL/Named_function_parameters.h>
+
+namespace CGAL {
+namespace GSM_mesh_optimization {
+namespace internal_np {
+
+enum energy_t { energy };
+enum freeze_boundary_t { freeze_boundary };
+enum sizing_field_t { sizing_field };
+enum metric_field_t { metric_field };
+enum convergence_threshold_t { convergence_threshold };
+enum number_of_threads_t { number_of_threads };
+
+} // namespace internal_np
+
+namespace parameters {
+
+#define CGAL_GSM_ADD_NAMED_PARAMETER(NAME)                                                        \
+  template <class T>                                                                             \
+  CGAL::Named_function_parameters<T, internal_np::NAME##_t> NAME(const T& t)                     \
+  {                                                                                              \
+    return CGAL::Named_function_parameters<T, internal_np::NAME##_t>(t);                         \
+  }                                                                                              \
+  template <class T, class NP_T, class NP_Tag, class NP_Base>                                    \
+  CGAL::Named_function_parameters<T, internal_np::NAME##_t,                                      \
+                                  CGAL::Named_function_parameters<NP_T, NP_Tag, NP_Base>>        \
+  NAME(const T& t, const CGAL::Named_function_parameters<NP_T, NP_Tag, NP_Base>& np)             \
+  {                                                                                              \
+    return CGAL::Named_function_parameters<T, internal_np::NAME##_t,                             \
+                                           CGAL::Named_function_parameters<NP_T, NP_Tag, NP_Base>>(t, np); \
+  }
+
+/// `Shape_matching_energy::GSM` (default) or `Shape_matching_energy::ESM`
+CGAL_GSM_ADD_NAMED_PARAMETER(energy)
+/// `bool`: keep every surface, feature-curve and corner vertex where it is (default `false`)
+CGAL_GSM_ADD_NAMED_PARAMETER(freeze_boundary)
+/// a callable `double(const Point_3&)`: the target edge length at a point (adaptive meshing)
+CGAL_GSM_ADD_NAMED_PARAMETER(sizing_field)
+/// a callable `Eigen::Matrix3d(const Point_3&)`: the anisotropic metric M(x), symmetric positive definite
+CGAL_GSM_ADD_NAMED_PARAMETER(metric_field)
+/// `double`: stop when a round lowers the mean energy by less than this fraction (default 1e-4)
+CGAL_GSM_ADD_NAMED_PARAMETER(convergence_threshold)
+/// `int`: the number of threads of the vertex sweeps (default 0: TBB's choice)
+CGAL_GSM_ADD_NAMED_PARAMETER(number_of_threads)
+
+#undef CGAL_GSM_ADD_NAMED_PARAMETER
+
+} // namespace parameters
+} // namespace GSM_mesh_optimization
+} // namespace CGAL
+
+#endif // CGAL_GSM_MESH_OPTIMIZATION_PARAMETERS_H

@@ -1,0 +1,269 @@
+// Copyright (c) 2026 VVM contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// CGAL::gsm_optimize_mesh_3(): Gradient-based Shape Matching optimization of
+// a tetrahedral mesh, a final stage after CGAL::make_mesh_3().
+
+#ifndef CGAL_GSM_OPTIMIZE_MESH_3_H
+#define CGAL_GSM_OPTIMIZE_MESH_3_H
+
+#include <CGAL/GSM_mesh_optimization/internal/GSM_optimizer.h>
+#include <CGAL/GSM_mesh_optimization/parameters.h>
+#include <CGAL/GSM_mesh_optimization/shape_matching_energy.h>
+#include <CGAL/GSM_mesh_optimization/tetrahedron_quality.h>
+
+#include <CGAL/Mesh_optimization_return_code.h>
+#include <CGAL/Named_function_parameters.h>
+
+#include <tbb/global_control.h>
+
+#include <cmath>
+#include <functional>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <type_traits>
+
+namespace CGAL {
+
+namespace GSM_mesh_optimization {
+namespace internal {
+
+template <class C3T3>
+Eigen::Vector3d centroid_of(const C3T3& c3t3, typename C3T3::Triangulation::Cell_handle c)
+{
+  Eigen::Vector3d s = Eigen::Vector3d::Zero();
+  for(int i = 0; i < 4; ++i) {
+    const auto& p = c3t3.triangulation().point(c, i);
+    s += Eigen::Vector3d(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+  }
+  return 0.25 * s;
+}
+
+// Rejects what GSM cannot start from, before anything is changed.
+template <class C3T3>
+void check_input_mesh(const C3T3& c3t3)
+{
+  const auto& tr = c3t3.triangulation();
+  if(tr.dimension() != 3 || c3t3.number_of_cells_in_complex() == 0)
+    throw std::invalid_argument("gsm_optimize_mesh_3: the complex has no cell");
+  for(auto v : tr.finite_vertex_handles()) {
+    const auto& p = tr.point(v);
+    if(!std::isfinite(CGAL::to_double(p.x())) || !std::isfinite(CGAL::to_double(p.y())) ||
+       !std::isfinite(CGAL::to_double(p.z())))
+      throw std::invalid_argument("gsm_optimize_mesh_3: a vertex has a non-finite coordinate");
+  }
+  std::size_t inverted = 0;
+  for(auto c : tr.finite_cell_handles()) {
+    const auto cp = tr.geom_traits().construct_point_3_object();
+    if(CGAL::orientation(cp(tr.point(c, 0)), cp(tr.point(c, 1)), cp(tr.point(c, 2)),
+                         cp(tr.point(c, 3))) != CGAL::POSITIVE)
+      ++inverted;
+  }
+  if(inverted > 0)
+    throw std::invalid_argument("gsm_optimize_mesh_3: the triangulation has " + std::to_string(inverted) +
+                                " inverted or flat cells");
+}
+
+// Template edge length of eq. 3.21: the regular tet edge l of a BCC-like mesh with
+// N vertices in a domain of volume V and boundary area A: V = N l^3 / sqrt(2) - A l / sqrt(6).
+template <class C3T3>
+double estimated_edge_length(const C3T3& c3t3)
+{
+  const auto& tr = c3t3.triangulation();
+  double volume = 0, area = 0;
+  std::unordered_set<const void*> vertices;
+  for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c) {
+    std::array<Eigen::Vector3d, 4> p;
+    for(int i = 0; i < 4; ++i) {
+      const auto& q = tr.point(c, i);
+      p[i] = Eigen::Vector3d(CGAL::to_double(q.x()), CGAL::to_double(q.y()), CGAL::to_double(q.z()));
+      vertices.insert(&*c->vertex(i));
+    }
+    volume += std::abs((p[1] - p[0]).dot((p[2] - p[0]).cross(p[3] - p[0]))) / 6.;
+  }
+  for(auto f = c3t3.facets_in_complex_begin(); f != c3t3.facets_in_complex_end(); ++f) {
+    std::array<Eigen::Vector3d, 3> p;
+    for(int k = 0; k < 3; ++k) {
+      const auto& q = tr.point(f->first, (f->second + 1 + k) & 3);
+      p[k] = Eigen::Vector3d(CGAL::to_double(q.x()), CGAL::to_double(q.y()), CGAL::to_double(q.z()));
+    }
+    area += 0.5 * (p[1] - p[0]).cross(p[2] - p[0]).norm();
+  }
+  const double n = double(vertices.size());
+  // f(l) = N l^3 / sqrt 2 - A l / sqrt 6 - V is increasing past its minimum: bisect there
+  auto f = [&](double l) { return n * l * l * l / std::sqrt(2.) - area * l / std::sqrt(6.) - volume; };
+  double lo = std::sqrt(area * std::sqrt(2.) / (3. * std::sqrt(6.) * n)), hi = (std::max)(2. * lo, 1e-12);
+  while(f(hi) < 0) hi *= 2;
+  for(int i = 0; i < 100; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (f(mid) < 0 ? lo : hi) = mid;
+  }
+  return hi;
+}
+
+} // namespace internal
+} // namespace GSM_mesh_optimization
+
+/*!
+ * \ingroup PkgGSMMeshOptimizationRef
+ *
+ * optimizes the cells in the complex of `c3t3` by Gradient-based Shape Matching:
+ * rounds of per-vertex Newton smoothing with a backtracking line search and of
+ * 2-3, 3-2 and 4-4 flips, each accepted only if it lowers the mean GSM energy
+ * of the cells, so that the shape of every tetrahedron comes close to the
+ * regular tetrahedron of the target size (dissertation ch. 3). Slivers have a
+ * huge GSM energy, so they are removed first.
+ *
+ * It is meant as the final stage after `make_mesh_3()` (with or without Lloyd or
+ * ODT), in place of `perturb_mesh_3()` and `exude_mesh_3()`. Vertex moves and
+ * flips do not keep the triangulation regular (weighted Delaunay): nothing that
+ * needs a regular triangulation (`refine_mesh_3()`, `perturb_mesh_3()`,
+ * `exude_mesh_3()`) may run after it.
+ *
+ * Interior vertices move freely; surface vertices (`in_dimension() == 2`) move
+ * in their tangent plane and are projected back onto the domain's surface
+ * (`MeshDomain::Construct_intersection` along the normal; an AABB tree for the
+ * polyhedral domains), staying on their surface patch; vertices on feature
+ * curves move along the curve (`construct_point_on_curve()`); corners never
+ * move. No cell is ever inverted. Flips never cross a surface facet, a feature
+ * edge or a subdomain boundary; subdomain and surface-patch indices and the
+ * complex's counters are kept.
+ *
+ * \tparam C3T3 a `Mesh_complex_3_in_triangulation_3`
+ * \tparam MeshDomain a model of `MeshDomain_3` (or `MeshDomainWithFeatures_3`)
+ * \tparam NamedParameters a sequence of named parameters
+ *
+ * \param c3t3 the mesh, modified in place
+ * \param domain the domain `c3t3` was generated from
+ * \param np an optional sequence of named parameters among the ones listed below
+ *
+ * \cgalNamedParamsBegin
+ *   \cgalParamNBegin{number_of_iterations}
+ *     \cgalParamDescription{the maximal number of rounds (smoothing then flips)}
+ *     \cgalParamType{int}
+ *     \cgalParamDefault{50}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{maximum_running_time}
+ *     \cgalParamDescription{a time limit in seconds, checked during the rounds; 0 for none}
+ *     \cgalParamType{double}
+ *     \cgalParamDefault{0}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{GSM_mesh_optimization::parameters::convergence_threshold}
+ *     \cgalParamDescription{stop when a round lowers the mean energy by less than this fraction}
+ *     \cgalParamType{double}
+ *     \cgalParamDefault{1e-4}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{do_flip}
+ *     \cgalParamDescription{whether the connectivity is optimized by flips}
+ *     \cgalParamType{bool}
+ *     \cgalParamDefault{true}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{GSM_mesh_optimization::parameters::freeze_boundary}
+ *     \cgalParamDescription{if `true`, surface, feature-curve and corner vertices stay where they are}
+ *     \cgalParamType{bool}
+ *     \cgalParamDefault{false}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{GSM_mesh_optimization::parameters::sizing_field}
+ *     \cgalParamDescription{the target edge length `h(p)` (adaptive meshing): cells are measured after scaling by `1/h`}
+ *     \cgalParamType{a callable `double(const Eigen::Vector3d&)`, positive and finite}
+ *     \cgalParamDefault{a uniform length estimated from the volume, boundary area and vertex count (eq. 3.21)}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{GSM_mesh_optimization::parameters::metric_field}
+ *     \cgalParamDescription{an anisotropic metric `M(p)`: cells are measured after mapping by `M^{1/2}`}
+ *     \cgalParamType{a callable `Eigen::Matrix3d(const Eigen::Vector3d&)`, symmetric positive definite}
+ *     \cgalParamDefault{isotropic}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{GSM_mesh_optimization::parameters::energy}
+ *     \cgalParamDescription{the energy minimized}
+ *     \cgalParamType{`GSM_mesh_optimization::Shape_matching_energy`}
+ *     \cgalParamDefault{`Shape_matching_energy::GSM`}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{GSM_mesh_optimization::parameters::number_of_threads}
+ *     \cgalParamDescription{the largest number of threads used; 0 lets TBB choose}
+ *     \cgalParamType{int}
+ *     \cgalParamDefault{0}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{visitor}
+ *     \cgalParamDescription{called after each round with its `GSM_mesh_optimization::Round_report`
+ *       (mean energy, min dihedral angle, moves, flips, time)}
+ *     \cgalParamType{a callable `void(const GSM_mesh_optimization::Round_report&)`}
+ *     \cgalParamDefault{none}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{verbose}
+ *     \cgalParamDescription{print one line per round to `std::cerr`}
+ *     \cgalParamType{bool}
+ *     \cgalParamDefault{false}
+ *   \cgalParamNEnd
+ * \cgalNamedParamsEnd
+ *
+ * \return `CONVERGENCE_REACHED`, `CANT_IMPROVE_ANYMORE` (a round changed nothing),
+ *   `MAX_ITERATION_NUMBER_REACHED` or `TIME_LIMIT_REACHED`.
+ *
+ * \throw std::invalid_argument, before `c3t3` is changed, if the complex has no
+ *   cell, a vertex has a non-finite coordinate, a cell is inverted or flat, both a
+ *   sizing field and a metric field are given, or the field is not positive
+ *   (definite) and finite at a cell of the mesh.
+ */
+template <class C3T3, class MeshDomain, class NamedParameters = parameters::Default_named_parameters>
+Mesh_optimization_return_code
+gsm_optimize_mesh_3(C3T3& c3t3, const MeshDomain& domain,
+                    const NamedParameters& np = parameters::default_values())
+{
+  namespace GSM = GSM_mesh_optimization;
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  using parameters::is_default_parameter;
+
+  GSM::internal::check_input_mesh(c3t3);
+
+  GSM::internal::GSM_options options;
+  options.max_rounds = choose_parameter(get_parameter(np, internal_np::number_of_iterations), 50);
+  options.time_limit = choose_parameter(get_parameter(np, internal_np::maximum_running_time), 0.);
+  options.do_flip = choose_parameter(get_parameter(np, internal_np::do_flip), true);
+  options.verbose = choose_parameter(get_parameter(np, internal_np::verbose), false);
+  options.convergence =
+      choose_parameter(get_parameter(np, GSM::internal_np::convergence_threshold), 1e-4);
+  options.freeze_boundary =
+      choose_parameter(get_parameter(np, GSM::internal_np::freeze_boundary), false);
+  options.energy = choose_parameter(get_parameter(np, GSM::internal_np::energy),
+                                    GSM::Shape_matching_energy::GSM);
+  const int threads = choose_parameter(get_parameter(np, GSM::internal_np::number_of_threads), 0);
+  if(options.max_rounds < 0 || options.time_limit < 0 || !(options.convergence >= 0) || threads < 0)
+    throw std::invalid_argument("gsm_optimize_mesh_3: negative iteration count, time limit, "
+                                "convergence threshold or thread count");
+
+  auto visitor = get_parameter(np, internal_np::visitor);
+  if constexpr(!std::is_same<decltype(visitor), internal_np::Param_not_found>::value)
+    options.visitor = [visitor](const GSM::Round_report& r) { visitor(r); };
+
+  auto sizing = get_parameter(np, GSM::internal_np::sizing_field);
+  auto metric_field = get_parameter(np, GSM::internal_np::metric_field);
+  constexpr bool has_sizing = !std::is_same<decltype(sizing), internal_np::Param_not_found>::value;
+  constexpr bool has_metric = !std::is_same<decltype(metric_field), internal_np::Param_not_found>::value;
+  static_assert(!(has_sizing && has_metric),
+                "gsm_optimize_mesh_3: give a sizing field or a metric field, not both");
+  GSM::internal::Metric_field metric = GSM::internal::Metric_field::uniform(1.);
+  if constexpr(has_sizing)
+    metric = GSM::internal::Metric_field::sizing(
+        [sizing](const Eigen::Vector3d& x) { return double(sizing(x)); });
+  else if constexpr(has_metric)
+    metric = GSM::internal::Metric_field::anisotropic(
+        [metric_field](const Eigen::Vector3d& x) { return Eigen::Matrix3d(metric_field(x)); });
+  else
+    metric = GSM::internal::Metric_field::uniform(GSM::internal::estimated_edge_length(c3t3));
+  if(!metric.is_constant()) // throws now, on a bad field, rather than in the middle of the work
+    for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c)
+      metric(GSM::internal::centroid_of(c3t3, c));
+
+  std::unique_ptr<tbb::global_control> thread_limit;
+  if(threads > 0)
+    thread_limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
+                                                         std::size_t(threads));
+  GSM::internal::GSM_optimizer<C3T3, MeshDomain> optimizer(c3t3, &domain, metric, options);
+  return optimizer();
+}
+
+} // namespace CGAL
+
+#endif // CGAL_GSM_OPTIMIZE_MESH_3_H
