@@ -28,8 +28,8 @@ namespace internal {
 /// counts of the flips done
 struct Flip_counts
 {
-  std::size_t flips_2_3 = 0, flips_3_2 = 0, flips_4_4 = 0;
-  std::size_t total() const { return flips_2_3 + flips_3_2 + flips_4_4; }
+  std::size_t flips_2_3 = 0, flips_3_2 = 0, flips_4_4 = 0, boundary_peels = 0;
+  std::size_t total() const { return flips_2_3 + flips_3_2 + flips_4_4 + boundary_peels; }
 };
 
 template <class C3T3>
@@ -79,7 +79,72 @@ public:
       if(!tr_.is_facet(f[0], f[1], f[2], c, i, j, k)) continue;
       if(try_flip_2_3(Facet(c, 6 - i - j - k))) ++done.flips_2_3;
     }
+    // flat cells lying on the surface: no flip and no move can give them volume
+    std::vector<std::array<Vertex_handle, 4>> flat_boundary_cells;
+    for(auto c = c3t3_.cells_in_complex_begin(); c != c3t3_.cells_in_complex_end(); ++c) {
+      int surface_facets = 0;
+      for(int i = 0; i < 4; ++i) surface_facets += c3t3_.is_in_complex(c, i) ? 1 : 0;
+      if(surface_facets == 2)
+        flat_boundary_cells.push_back({{c->vertex(0), c->vertex(1), c->vertex(2), c->vertex(3)}});
+    }
+    for(const auto& t : flat_boundary_cells) {
+      Cell_handle c;
+      int i, j, k, l;
+      if(tr_.is_cell(t[0], t[1], t[2], t[3], c, i, j, k, l) && try_peel_boundary_cell(c))
+        ++done.boundary_peels;
+    }
     return done;
+  }
+
+  /// removes from the complex a nearly flat cell `c` with two surface facets of one
+  /// patch, replacing them by its two other facets (a 2-2 flip of the surface
+  /// triangulation that moves the surface by less than the cell's small height),
+  /// if that lowers the mean energy
+  bool try_peel_boundary_cell(const Cell_handle& c)
+  {
+    int in[2], out[2], n_in = 0, n_out = 0;
+    for(int i = 0; i < 4; ++i) {
+      if(c3t3_.is_in_complex(c, i)) {
+        if(n_in == 2) return false;
+        in[n_in++] = i;
+      } else {
+        if(n_out == 2) return false;
+        out[n_out++] = i;
+      }
+    }
+    if(n_in != 2 || !c3t3_.is_in_complex(c)) return false;
+    const Surface_patch_index patch = c3t3_.surface_patch_index(c, in[0]);
+    if(!(c3t3_.surface_patch_index(c, in[1]) == patch)) return false;
+    for(int i = 0; i < 4; ++i)
+      for(int j = i + 1; j < 4; ++j)
+        if(c3t3_.is_in_complex(c->vertex(i), c->vertex(j))) return false; // a feature edge
+    // the new surface edge (the vertices opposite the old surface facets) must be new
+    const Vertex_handle u = c->vertex(in[0]), w = c->vertex(in[1]);
+    Cell_handle ec;
+    int ei, ej;
+    if(!tr_.is_edge(u, w, ec, ei, ej)) return false;
+    auto fc = tr_.incident_facets(Edge(ec, ei, ej)), fdone = fc;
+    do
+      if(c3t3_.is_in_complex(*fc)) return false;
+    while(++fc != fdone);
+    // flat: the surface moves by the height of the cell, small next to its edges
+    if(!is_flat(c)) return false;
+    const double e = energy_.cell(c);
+    if(!(-e < -mean())) return false;
+
+    c3t3_.remove_from_complex(Facet(c, in[0]));
+    c3t3_.remove_from_complex(Facet(c, in[1]));
+    c3t3_.remove_from_complex(c);
+    for(int k = 0; k < 2; ++k) {
+      c3t3_.add_to_complex(Facet(c, out[k]), patch);
+      const Facet m = tr_.mirror_facet(Facet(c, out[k]));
+      const auto centre = tr_.geom_traits().construct_centroid_3_object()(
+          bare(c->vertex((out[k] + 1) & 3)), bare(c->vertex((out[k] + 2) & 3)), bare(c->vertex((out[k] + 3) & 3)));
+      c->set_facet_surface_center(out[k], centre);
+      m.first->set_facet_surface_center(m.second, centre);
+    }
+    account(e, 0., -1);
+    return true;
   }
 
   double mean() const { return count_ > 0 ? sum_ / double(count_) : 0.; }
@@ -159,14 +224,21 @@ public:
     }
     if(best_k < 0) return false;
 
-    // a 2-3 flip of the facet (a, b, r[k+1]) makes the diagonal (r[k], r[k+2]);
+    // a 2-3 flip of the facet (a, b, m) makes the diagonal (r[k], r[k+2]), for the
+    // m of r[k+1], r[k+3] whose triangle with (a, b) the diagonal crosses;
     // then the edge (a, b) has three cells and a 3-2 flip removes it
-    const Vertex_handle d0 = r[best_k], d1 = r[best_k + 2], m0 = r[best_k + 1];
-    Cell_handle c;
-    int i, j, k;
-    if(!tr_.is_facet(a, b, m0, c, i, j, k)) return false;
+    const Vertex_handle d0 = r[best_k], d1 = r[best_k + 2];
     release(ring);
-    if(!tr_.flip(c, 6 - i - j - k)) {
+    bool first_flip = false;
+    for(const Vertex_handle& m : {r[best_k + 1], r[(best_k + 3) % 4]}) {
+      Cell_handle c;
+      int i, j, k;
+      if(tr_.is_facet(a, b, m, c, i, j, k) && tr_.flip(c, 6 - i - j - k)) {
+        first_flip = true;
+        break;
+      }
+    }
+    if(!first_flip) {
       claim(ring, s);
       return false;
     }
@@ -187,6 +259,28 @@ public:
   }
 
 private:
+  typename Tr::Geom_traits::Point_3 bare(const Vertex_handle& v) const
+  {
+    return tr_.geom_traits().construct_point_3_object()(tr_.point(v));
+  }
+
+  // height of the cell over its largest facet below 5% of its longest edge
+  bool is_flat(const Cell_handle& c) const
+  {
+    std::array<Eigen::Vector3d, 4> p;
+    for(int i = 0; i < 4; ++i) p[i] = energy_.position(c->vertex(i));
+    const double six_v = std::abs((p[1] - p[0]).dot((p[2] - p[0]).cross(p[3] - p[0])));
+    double max_area2 = 0, max_edge = 0; // twice the area
+    for(int i = 0; i < 4; ++i) {
+      const Eigen::Vector3d& a = p[(i + 1) & 3], &b = p[(i + 2) & 3], &d = p[(i + 3) & 3];
+      max_area2 = (std::max)(max_area2, (b - a).cross(d - a).norm());
+      for(int j = i + 1; j < 4; ++j) max_edge = (std::max)(max_edge, (p[i] - p[j]).norm());
+    }
+    const double height = max_area2 > 0 ? six_v / max_area2 : 0;
+    return height < 0.05 * max_edge;
+  }
+
+
   template <std::size_t N>
   static std::array<Vertex_handle, N> sorted(std::array<Vertex_handle, N> a)
   {
@@ -289,22 +383,25 @@ private:
   void release(std::initializer_list<Cell_handle> cells) { release(std::vector<Cell_handle>(cells)); }
 
   // puts (new) cells into subdomain `s` and gives each of their facets the surface
-  // data of its mirror facet: a flip reuses cells, whose old facet data are stale
+  // data of its mirror facet: a flip reuses cells, whose old facet data are stale.
+  // Facets between two of the new cells are inside the flipped region: never surface.
   void claim(const std::vector<Cell_handle>& cells, const Subdomain_index& s)
   {
     for(const Cell_handle& c : cells) {
       c3t3_.add_to_complex(c, s);
+      for(int i = 0; i < 4; ++i) c->set_surface_patch_index(i, Surface_patch_index());
+    }
+    for(const Cell_handle& c : cells)
       for(int i = 0; i < 4; ++i) {
         const Cell_handle n = c->neighbor(i);
+        if(std::find(cells.begin(), cells.end(), n) != cells.end()) continue;
         const int in = n->index(c);
         if(n->is_facet_on_surface(in)) {
           c->set_surface_patch_index(i, n->surface_patch_index(in));
           c->set_facet_surface_center(i, n->get_facet_surface_center(in));
           c->set_facet_surface_center_index(i, n->get_facet_surface_center_index(in));
-        } else
-          c->set_surface_patch_index(i, Surface_patch_index());
+        }
       }
-    }
   }
   void claim(std::initializer_list<Cell_handle> cells, const Subdomain_index& s)
   {

@@ -198,7 +198,8 @@ public:
     }
     for(const Cell_handle& c : r.infinite_cells) {
       // hull facet f of c, the interior witness w beyond it, and the hull
-      // vertices d across its edges: every d must lie strictly on w's side of f
+      // vertices d across its edges: no d may lie beyond f (coplanar is fine:
+      // flat parts of the hull, such as a cube's faces)
       const int inf = c->index(tr_.infinite_vertex());
       Bare_point f[3];
       for(int k = 0; k < 3; ++k) {
@@ -213,7 +214,8 @@ public:
         if(j == inf) continue;
         const Cell_handle nb = c->neighbor(j);
         const Vertex_handle d = nb->vertex(nb->index(c));
-        if(CGAL::orientation(f[0], f[1], f[2], d == r.v ? p : bare(d)) != side) return false;
+        const CGAL::Orientation o = CGAL::orientation(f[0], f[1], f[2], d == r.v ? p : bare(d));
+        if(o != side && o != CGAL::COPLANAR) return false;
       }
     }
     return true;

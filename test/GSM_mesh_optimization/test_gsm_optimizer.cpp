@@ -1,0 +1,517 @@
+// Copyright (c) 2026 VVM contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// gsm_optimize_mesh_3 and its parts:
+// - energies: known values, gradient and Hessian against finite differences;
+// - flips: 2-3, 3-2, 4-4 and the boundary peel on hand-made configurations,
+//   energy change as predicted, valid complex with correct labels and counters;
+// - whole runs on an implicit sphere and on a polyhedral cube with features:
+//   mean energy never increases between rounds, no inverted cell, surface
+//   vertices on the surface, feature vertices on their edges, corners fixed,
+//   boundary frozen on request, time limit, ESM;
+// - bad input: empty complex, inverted cell, bad sizing field: a clear
+//   exception and the mesh unchanged.
+
+#include "test_utilities.h"
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Labeled_mesh_domain_3.h>
+#include <CGAL/Mesh_complex_3_in_triangulation_3.h>
+#include <CGAL/Mesh_criteria_3.h>
+#include <CGAL/Mesh_triangulation_3.h>
+#include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
+#include <CGAL/Polyhedral_mesh_domain_with_features_3.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/make_mesh_3.h>
+
+#include <CGAL/GSM_mesh_optimization/internal/Energy_guided_flips.h>
+#include <CGAL/GSM_mesh_optimization/mesh_quality_statistics.h>
+#include <CGAL/GSM_mesh_optimization/shape_matching_energy.h>
+#include <CGAL/gsm_optimize_mesh_3.h>
+
+#include <Eigen/Geometry>
+
+#include <cmath>
+#include <functional>
+#include <map>
+#include <random>
+#include <vector>
+
+typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+namespace GSM = CGAL::GSM_mesh_optimization;
+namespace params = CGAL::parameters;
+
+namespace {
+
+// ---------------------------------------------------------------------------
+// energies
+
+typedef std::function<GSM::Energy_derivatives(const Eigen::Vector3d&)> Energy_at;
+
+void check_derivatives(const Energy_at& f, const Eigen::Vector3d& x, const char* what)
+{
+  const GSM::Energy_derivatives d = f(x);
+  const double h = 1e-6 * (1 + x.norm());
+  Eigen::Vector3d g;
+  Eigen::Matrix3d H;
+  for(int i = 0; i < 3; ++i) {
+    Eigen::Vector3d e = Eigen::Vector3d::Zero();
+    e[i] = h;
+    const GSM::Energy_derivatives p = f(x + e), m = f(x - e);
+    g[i] = (p.value - m.value) / (2 * h);
+    H.col(i) = (p.gradient - m.gradient) / (2 * h);
+  }
+  const double gtol = 1e-5 * (1 + d.gradient.norm()), htol = 1e-4 * (1 + d.hessian.norm());
+  if(!VVM_CHECK((g - d.gradient).norm() < gtol)) std::cerr << "    " << what << " gradient\n";
+  if(!VVM_CHECK((H - d.hessian).norm() < htol)) std::cerr << "    " << what << " Hessian\n";
+  VVM_CHECK((d.hessian - d.hessian.transpose()).norm() < 1e-9 * (1 + d.hessian.norm()));
+}
+
+void test_energies()
+{
+  // known values: regular simplices of edge 1 match the template
+  const Eigen::Vector3d a(0, 0, 0), b(1, 0, 0), c(0.5, std::sqrt(3.) / 2, 0),
+      d(0.5, std::sqrt(3.) / 6, std::sqrt(2. / 3.));
+  VVM_CHECK_CLOSE(GSM::gsm_tetrahedron_energy(a, b, c, d), 3., 1e-12);
+  VVM_CHECK_CLOSE(GSM::gsm_tetrahedron_energy_derivatives(d, a, b, c).value, 3., 1e-12);
+  VVM_CHECK_CLOSE(GSM::gsm_triangle_energy_derivatives(a, b, c).value, 2., 1e-12);
+  VVM_CHECK_CLOSE(GSM::gsm_segment_energy_derivatives(a, b).value, 1., 1e-12);
+  VVM_CHECK_CLOSE(GSM::esm_tetrahedron_energy_derivatives(d, a, b, c).value, 3., 1e-12);
+  // (a^2/2) sum 1/h_i^2 form of eq. 3.8 for the BCC tet (heights from 6V / (2 area))
+  {
+    const Eigen::Vector3d p0(0, 0, 0), p1(1, 0, 0), p2(.5, .5, -.5), p3(.5, .5, .5);
+    const double six_v = std::abs((p1 - p0).dot((p2 - p0).cross(p3 - p0)));
+    double sum = 0;
+    const Eigen::Vector3d* q[4] = {&p0, &p1, &p2, &p3};
+    for(int i = 0; i < 4; ++i) {
+      const Eigen::Vector3d &u = *q[(i + 1) % 4], &v = *q[(i + 2) % 4], &w = *q[(i + 3) % 4];
+      const double h = six_v / (v - u).cross(w - u).norm();
+      sum += 1 / (h * h);
+    }
+    VVM_CHECK_CLOSE(GSM::gsm_tetrahedron_energy(p0, p1, p2, p3), sum / 2, 1e-12);
+  }
+  // a sliver costs far more than a regular tet
+  VVM_CHECK(GSM::gsm_tetrahedron_energy(Eigen::Vector3d(1, 0, 0), Eigen::Vector3d(-1, 0, 0),
+                                        Eigen::Vector3d(0, -1, 0.05), Eigen::Vector3d(0, 1, 0.05)) > 100);
+
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(-1, 1);
+  auto rnd = [&] { return Eigen::Vector3d(u(rng), u(rng), u(rng)); };
+  for(int t = 0; t < 20; ++t) {
+    const Eigen::Vector3d p = rnd(), q = rnd(), r = rnd(), x = rnd();
+    check_derivatives([&](const Eigen::Vector3d& v) { return GSM::gsm_tetrahedron_energy_derivatives(v, p, q, r); }, x, "gsm tet");
+    check_derivatives([&](const Eigen::Vector3d& v) { return GSM::gsm_triangle_energy_derivatives(v, p, q); }, x, "gsm triangle");
+    check_derivatives([&](const Eigen::Vector3d& v) { return GSM::gsm_segment_energy_derivatives(v, p); }, x, "gsm segment");
+    check_derivatives([&](const Eigen::Vector3d& v) { return GSM::esm_tetrahedron_energy_derivatives(v, p, q, r); }, x, "esm tet");
+    // mapped by a constant B (anisotropic metric): d/dx E(Bx)
+    Eigen::Matrix3d B = Eigen::Matrix3d::Identity() + 0.4 * Eigen::Matrix3d::Random();
+    check_derivatives([&](const Eigen::Vector3d& v) {
+      return GSM::gsm_tetrahedron_energy_derivatives(B * v, B * p, B * q, B * r).mapped_back(B);
+    }, x, "mapped gsm tet");
+    VVM_CHECK_CLOSE(GSM::gsm_tetrahedron_energy_derivatives(x, p, q, r).value,
+                    GSM::gsm_tetrahedron_energy(x, p, q, r), 1e-9 * GSM::gsm_tetrahedron_energy(x, p, q, r));
+  }
+}
+
+// ---------------------------------------------------------------------------
+// flips on hand-made complexes
+
+typedef CGAL::Labeled_mesh_domain_3<K> Implicit_domain;
+typedef CGAL::Mesh_triangulation_3<Implicit_domain>::type Implicit_tr;
+typedef CGAL::Mesh_complex_3_in_triangulation_3<Implicit_tr> Implicit_c3t3;
+typedef Implicit_tr::Vertex_handle Vertex_handle;
+typedef Implicit_tr::Bare_point Bare_point;
+
+// every finite cell positively oriented, the triangulation data structure
+// valid (not the regular property: GSM drops it on purpose), and the
+// complex's counters equal to what its iterators see
+template <class C3T3>
+bool complex_is_valid(const C3T3& c3t3)
+{
+  const auto& tr = c3t3.triangulation();
+  bool ok = tr.tds().is_valid();
+  for(auto c : tr.finite_cell_handles())
+    ok = ok && CGAL::orientation(tr.point(c, 0).point(), tr.point(c, 1).point(), tr.point(c, 2).point(),
+                                 tr.point(c, 3).point()) == CGAL::POSITIVE;
+  std::size_t cells = 0, facets = 0;
+  for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c) ++cells;
+  for(auto f = c3t3.facets_in_complex_begin(); f != c3t3.facets_in_complex_end(); ++f) {
+    ++facets;
+    const auto m = tr.mirror_facet(*f);
+    ok = ok && f->first->surface_patch_index(f->second) == m.first->surface_patch_index(m.second);
+  }
+  if(!ok || cells != c3t3.number_of_cells_in_complex() || facets != c3t3.number_of_facets_in_complex())
+    std::cerr << "    complex: geometry/labels " << ok << ", cells " << cells << " / " << c3t3.number_of_cells_in_complex()
+              << ", facets " << facets << " / " << c3t3.number_of_facets_in_complex() << "\n";
+  return ok && cells == c3t3.number_of_cells_in_complex() && facets == c3t3.number_of_facets_in_complex();
+}
+
+// all finite cells into subdomain 1, the convex hull facets into patch (1,0)
+void fill_complex(Implicit_c3t3& c3t3)
+{
+  Implicit_tr& tr = c3t3.triangulation();
+  for(auto c : tr.finite_cell_handles()) c3t3.add_to_complex(c, 1);
+  for(auto c : tr.finite_cell_handles())
+    for(int i = 0; i < 4; ++i)
+      if(tr.is_infinite(c->neighbor(i))) c3t3.add_to_complex(c, i, std::make_pair(1, 0));
+}
+
+Vertex_handle insert(Implicit_tr& tr, double x, double y, double z)
+{
+  return tr.insert(Implicit_tr::Point(Bare_point(x, y, z)));
+}
+
+struct Flip_fixture
+{
+  Implicit_c3t3 c3t3;
+  GSM::internal::Metric_field metric = GSM::internal::Metric_field::uniform(1.);
+  GSM::internal::Mesh_energy<Implicit_c3t3> energy{c3t3, metric, GSM::Shape_matching_energy::GSM};
+  double sum = 0;
+  std::size_t count = 0;
+
+  void start()
+  {
+    fill_complex(c3t3);
+    std::tie(sum, count) = energy.total();
+  }
+  GSM::internal::Energy_guided_flips<Implicit_c3t3> flips() { return {c3t3, energy, sum, count}; }
+};
+
+// A triangle (a, b, c) pierced by the segment (p, q) at height h: GSM prefers
+// the two tets (a, b, c, p), (a, b, c, q) when h is large (1.2: total energy
+// 2.25 against 7.49) and the three around (p, q) when h is small (0.15: 40.3
+// against 60.6). Starting from the worse one, the flip must be taken.
+void check_flip_from_worse(double h, bool expect_three)
+{
+  Flip_fixture f;
+  Implicit_tr& tr = f.c3t3.triangulation();
+  const Vertex_handle a = insert(tr, 1, 0, 0), b = insert(tr, -0.5, 0.87, 0), c = insert(tr, -0.5, -0.87, 0);
+  const Vertex_handle p = insert(tr, 0, 0, h), q = insert(tr, 0, 0, -h);
+  Implicit_tr::Cell_handle cell;
+  int i, j, k;
+  // Delaunay picks the other configuration; go to the worse one with CGAL's flips
+  if(expect_three) {
+    VVM_CHECK(tr.is_edge(p, q, cell, i, j) && tr.flip(Implicit_tr::Edge(cell, i, j)));
+  } else {
+    VVM_CHECK(tr.is_facet(a, b, c, cell, i, j, k) && tr.flip(cell, 6 - i - j - k));
+  }
+  f.start();
+  const std::size_t n = expect_three ? 2 : 3;
+  VVM_CHECK_EQUAL(f.c3t3.number_of_cells_in_complex(), n);
+  const double before = f.sum;
+  auto flips = f.flips();
+  if(expect_three) {
+    VVM_CHECK(tr.is_facet(a, b, c, cell, i, j, k) && flips.try_flip_2_3(Implicit_tr::Facet(cell, 6 - i - j - k)));
+    VVM_CHECK(tr.is_edge(p, q, cell, i, j));
+  } else {
+    VVM_CHECK(tr.is_edge(p, q, cell, i, j) && flips.try_flip_3_2(Implicit_tr::Edge(cell, i, j)));
+    VVM_CHECK(tr.is_facet(a, b, c, cell, i, j, k));
+  }
+  const std::size_t m = expect_three ? 3 : 2;
+  VVM_CHECK_EQUAL(f.c3t3.number_of_cells_in_complex(), m);
+  VVM_CHECK_EQUAL(tr.number_of_finite_cells(), m);
+  VVM_CHECK(complex_is_valid(f.c3t3));
+  VVM_CHECK_EQUAL(f.c3t3.number_of_facets_in_complex(), std::size_t(6)); // hull facets kept their patch
+  // the running sum is the exact new energy, and the mean went down
+  VVM_CHECK_CLOSE(f.sum, f.energy.total().first, 1e-9 * f.sum);
+  VVM_CHECK(f.sum / double(m) < before / double(n));
+  // and the flip back is refused
+  if(expect_three) {
+    VVM_CHECK(tr.is_edge(p, q, cell, i, j) && !flips.try_flip_3_2(Implicit_tr::Edge(cell, i, j)));
+  } else {
+    VVM_CHECK(tr.is_facet(a, b, c, cell, i, j, k) && !flips.try_flip_2_3(Implicit_tr::Facet(cell, 6 - i - j - k)));
+  }
+  VVM_CHECK_EQUAL(f.c3t3.number_of_cells_in_complex(), m);
+}
+
+void test_flip_2_3_and_3_2()
+{
+  check_flip_from_worse(0.15, true);  // 2-3
+  check_flip_from_worse(1.2, false);  // 3-2
+}
+
+void test_flip_4_4()
+{
+  // an octahedron: four tets around its long diagonal (a, b) are worse than
+  // four around one of its short diagonals; the 4-4 flip makes the change
+  Flip_fixture f;
+  Implicit_tr& tr = f.c3t3.triangulation();
+  const Vertex_handle r0 = insert(tr, 1, 0, 0), r1 = insert(tr, 0, 1.05, 0), r2 = insert(tr, -1, 0, 0),
+                      r3 = insert(tr, 0, -1.05, 0);
+  const Vertex_handle a = insert(tr, 0.2, 0.2, 1.6), b = insert(tr, 0.2, 0.2, -1.6);
+  Implicit_tr::Cell_handle cell;
+  int i, j, k;
+  if(!tr.is_edge(a, b, cell, i, j)) {
+    // Delaunay chose a short diagonal (s0, s2): move to (a, b) by a 2-3 then a 3-2 flip
+    const bool x_axis = tr.is_edge(r0, r2, cell, i, j);
+    VVM_CHECK(x_axis || tr.is_edge(r1, r3, cell, i, j));
+    const Vertex_handle s0 = x_axis ? r0 : r1, s2 = x_axis ? r2 : r3, m = x_axis ? r1 : r0;
+    VVM_CHECK(tr.is_facet(s0, s2, m, cell, i, j, k) && tr.flip(cell, 6 - i - j - k));
+    VVM_CHECK(tr.is_edge(s0, s2, cell, i, j) && tr.flip(Implicit_tr::Edge(cell, i, j)));
+  }
+  f.start();
+  VVM_CHECK_EQUAL(f.c3t3.number_of_cells_in_complex(), std::size_t(4));
+  if(VVM_CHECK(tr.is_edge(a, b, cell, i, j))) {
+    const double before = f.sum;
+    auto flips = f.flips();
+    VVM_CHECK(flips.try_flip_4_4(Implicit_tr::Edge(cell, i, j)));
+    VVM_CHECK(!tr.is_edge(a, b, cell, i, j));
+    VVM_CHECK(tr.is_edge(r0, r2, cell, i, j) || tr.is_edge(r1, r3, cell, i, j));
+    VVM_CHECK(f.sum < before);
+  }
+  VVM_CHECK_EQUAL(f.c3t3.number_of_cells_in_complex(), std::size_t(4));
+  VVM_CHECK(complex_is_valid(f.c3t3));
+  VVM_CHECK_CLOSE(f.sum, f.energy.total().first, 1e-9 * f.sum);
+}
+
+void test_boundary_peel()
+{
+  // a flat tet lying on the hull of a square pyramid base: four points almost
+  // coplanar under a cap; its two hull facets are surface facets of one patch
+  Flip_fixture f;
+  Implicit_tr& tr = f.c3t3.triangulation();
+  const Vertex_handle a = insert(tr, 1, 0, 0), b = insert(tr, -1, 0, 0), c = insert(tr, 0, 1, 0.02),
+                      d = insert(tr, 0, -1, 0.02);
+  insert(tr, 0, 0, 1.5);
+  f.start();
+  // find the flat cell (a, b, c, d)
+  Implicit_tr::Cell_handle cell;
+  int i, j, k, l;
+  if(VVM_CHECK(tr.is_cell(a, b, c, d, cell, i, j, k, l))) {
+    int surface = 0;
+    for(int n = 0; n < 4; ++n) surface += f.c3t3.is_in_complex(cell, n) ? 1 : 0;
+    VVM_CHECK_EQUAL(surface, 2);
+    const std::size_t cells = f.c3t3.number_of_cells_in_complex();
+    auto flips = f.flips();
+    VVM_CHECK(flips.try_peel_boundary_cell(cell));
+    VVM_CHECK_EQUAL(f.c3t3.number_of_cells_in_complex(), cells - 1);
+    VVM_CHECK(!f.c3t3.is_in_complex(cell));
+    VVM_CHECK(complex_is_valid(f.c3t3));
+    // the surface of the complex is still closed: every edge of its facets in two of them
+    std::map<std::pair<Vertex_handle, Vertex_handle>, int> edge_use;
+    for(auto fit = f.c3t3.facets_in_complex_begin(); fit != f.c3t3.facets_in_complex_end(); ++fit)
+      for(int n = 1; n <= 3; ++n) {
+        Vertex_handle u = fit->first->vertex((fit->second + n) & 3), w = fit->first->vertex((fit->second + n % 3 + 1) & 3);
+        if(w < u) std::swap(u, w);
+        ++edge_use[{u, w}];
+      }
+    bool closed = true;
+    for(const auto& e : edge_use) closed = closed && e.second == 2;
+    VVM_CHECK(closed);
+  }
+}
+
+// ---------------------------------------------------------------------------
+// whole runs
+
+double sphere_function(const K::Point_3& p) { return p.x() * p.x() + p.y() * p.y() + p.z() * p.z() - 1.; }
+
+Implicit_c3t3 make_sphere_mesh(double size)
+{
+  Implicit_domain domain = Implicit_domain::create_implicit_mesh_domain(
+      std::function<double(const K::Point_3&)>(sphere_function), K::Sphere_3(CGAL::ORIGIN, 4.),
+      params::relative_error_bound = 1e-9);
+  CGAL::Mesh_criteria_3<Implicit_tr> criteria(params::facet_angle = 25, params::facet_size = size,
+                                              params::facet_distance = size / 10,
+                                              params::cell_radius_edge_ratio = 3, params::cell_size = size);
+  CGAL::get_default_random() = CGAL::Random(1);
+  return CGAL::make_mesh_3<Implicit_c3t3>(domain, criteria, params::no_perturb(), params::no_exude());
+}
+
+Implicit_domain sphere_domain()
+{
+  return Implicit_domain::create_implicit_mesh_domain(
+      std::function<double(const K::Point_3&)>(sphere_function), K::Sphere_3(CGAL::ORIGIN, 4.),
+      params::relative_error_bound = 1e-9);
+}
+
+template <class C3T3>
+std::map<typename C3T3::Triangulation::Vertex_handle, Eigen::Vector3d> positions(const C3T3& c3t3)
+{
+  std::map<typename C3T3::Triangulation::Vertex_handle, Eigen::Vector3d> m;
+  for(auto v : c3t3.triangulation().finite_vertex_handles()) {
+    const auto& p = c3t3.triangulation().point(v);
+    m[v] = Eigen::Vector3d(p.x(), p.y(), p.z());
+  }
+  return m;
+}
+
+void test_sphere_run()
+{
+  const Implicit_domain domain = sphere_domain();
+  Implicit_c3t3 c3t3 = make_sphere_mesh(0.2);
+  const GSM::Mesh_quality_statistics before = GSM::mesh_quality_statistics(c3t3);
+  VVM_CHECK(before.number_of_cells > 1000);
+  double initial_energy;
+  {
+    GSM::internal::Metric_field metric = GSM::internal::Metric_field::uniform(GSM::internal::estimated_edge_length(c3t3));
+    GSM::internal::Mesh_energy<Implicit_c3t3> e(c3t3, metric, GSM::Shape_matching_energy::GSM);
+    const auto t = e.total();
+    initial_energy = t.first / double(t.second);
+  }
+  std::vector<GSM::Round_report> reports;
+  const CGAL::Mesh_optimization_return_code code = CGAL::gsm_optimize_mesh_3(
+      c3t3, domain, params::visitor([&](const GSM::Round_report& r) { reports.push_back(r); }));
+  VVM_CHECK(code == CGAL::CONVERGENCE_REACHED || code == CGAL::CANT_IMPROVE_ANYMORE ||
+            code == CGAL::MAX_ITERATION_NUMBER_REACHED);
+  VVM_CHECK(!reports.empty() && reports.size() <= 50);
+  double previous = initial_energy;
+  for(const GSM::Round_report& r : reports) {
+    VVM_CHECK(r.energy <= previous * (1 + 1e-12)); // never increases
+    previous = r.energy;
+  }
+  VVM_CHECK(reports.front().number_of_moves > 0 && reports.front().number_of_flips > 0);
+  VVM_CHECK(complex_is_valid(c3t3));
+  const GSM::Mesh_quality_statistics after = GSM::mesh_quality_statistics(c3t3);
+  VVM_CHECK_EQUAL(after.number_of_inverted_cells, std::size_t(0));
+  VVM_CHECK(after.min_dihedral_angle > before.min_dihedral_angle + 10);
+  VVM_CHECK(after.min_dihedral_angle > 18);
+  VVM_CHECK(after.n_min_dihedral_below[2] < before.n_min_dihedral_below[2] / 5);
+  VVM_CHECK_CLOSE(reports.back().min_dihedral_angle, after.min_dihedral_angle, 1e-12);
+  // surface vertices are on the sphere (to the domain's intersection accuracy)
+  double worst = 0;
+  for(auto v : c3t3.triangulation().finite_vertex_handles())
+    if(v->in_dimension() == 2) worst = (std::max)(worst, std::abs(std::sqrt(sphere_function(v->point().point()) + 1) - 1));
+  VVM_CHECK(worst < 1e-6);
+  if(worst >= 1e-6) std::cerr << "    surface vertex off the sphere by " << worst << "\n";
+
+  // ESM runs too, and is no match for GSM on slivers
+  Implicit_c3t3 esm = make_sphere_mesh(0.2);
+  CGAL::gsm_optimize_mesh_3(esm, domain, GSM::parameters::energy(GSM::Shape_matching_energy::ESM));
+  VVM_CHECK(complex_is_valid(esm));
+  VVM_CHECK(GSM::mesh_quality_statistics(esm).min_dihedral_angle < after.min_dihedral_angle);
+
+  // a frozen boundary stays where it was; a time limit is honoured
+  Implicit_c3t3 frozen = make_sphere_mesh(0.2);
+  const auto start = positions(frozen);
+  CGAL::gsm_optimize_mesh_3(frozen, domain,
+                            GSM::parameters::freeze_boundary(true, params::number_of_iterations(3)));
+  bool boundary_fixed = true, interior_moved = false;
+  for(auto v : frozen.triangulation().finite_vertex_handles()) {
+    const Eigen::Vector3d p(v->point().x(), v->point().y(), v->point().z());
+    if(v->in_dimension() < 3) boundary_fixed = boundary_fixed && p == start.at(v);
+    else interior_moved = interior_moved || p != start.at(v);
+  }
+  VVM_CHECK(boundary_fixed && interior_moved);
+  Implicit_c3t3 timed = make_sphere_mesh(0.2);
+  VVM_CHECK(CGAL::gsm_optimize_mesh_3(timed, domain, params::maximum_running_time(1e-9)) ==
+            CGAL::TIME_LIMIT_REACHED);
+  VVM_CHECK(complex_is_valid(timed));
+
+  // a sizing field (the dissertation's s(x) of Fig. 3.7) is accepted and keeps the mesh valid
+  Implicit_c3t3 adaptive = make_sphere_mesh(0.2);
+  CGAL::gsm_optimize_mesh_3(adaptive, domain, GSM::parameters::sizing_field([](const Eigen::Vector3d& x) {
+    return 0.025 + 0.2 * std::abs(x.norm() - 0.5);
+  }, params::number_of_iterations(3)));
+  VVM_CHECK(complex_is_valid(adaptive));
+}
+
+void test_bad_input()
+{
+  const Implicit_domain domain = sphere_domain();
+  Implicit_c3t3 empty;
+  bool thrown = false;
+  try { CGAL::gsm_optimize_mesh_3(empty, domain); } catch(const std::invalid_argument& e) {
+    thrown = std::string(e.what()).find("no cell") != std::string::npos;
+  }
+  VVM_CHECK(thrown);
+
+  Implicit_c3t3 c3t3 = make_sphere_mesh(0.3);
+  // a bad sizing field: refused before any change
+  const auto start = positions(c3t3);
+  thrown = false;
+  try {
+    CGAL::gsm_optimize_mesh_3(c3t3, domain, GSM::parameters::sizing_field([](const Eigen::Vector3d& x) { return x.x(); }));
+  } catch(const std::invalid_argument& e) {
+    thrown = std::string(e.what()).find("sizing field") != std::string::npos;
+  }
+  VVM_CHECK(thrown);
+  VVM_CHECK(positions(c3t3) == start);
+  thrown = false;
+  try {
+    CGAL::gsm_optimize_mesh_3(c3t3, domain, GSM::parameters::metric_field([](const Eigen::Vector3d&) {
+      return Eigen::Matrix3d(Eigen::Vector3d(1, -1, 1).asDiagonal());
+    }));
+  } catch(const std::invalid_argument& e) {
+    thrown = std::string(e.what()).find("positive definite") != std::string::npos;
+  }
+  VVM_CHECK(thrown);
+  VVM_CHECK(positions(c3t3) == start);
+
+  // an inverted cell: pull an interior vertex through its opposite facet
+  Implicit_tr& tr = c3t3.triangulation();
+  for(auto c : tr.finite_cell_handles()) {
+    if(!c3t3.is_in_complex(c) || c->vertex(0)->in_dimension() != 3) continue;
+    const Vertex_handle v = c->vertex(0);
+    Bare_point q = CGAL::centroid(tr.point(c, 1).point(), tr.point(c, 2).point(), tr.point(c, 3).point());
+    const Bare_point p = v->point().point();
+    v->set_point(Implicit_tr::Point(Bare_point(2 * q.x() - p.x(), 2 * q.y() - p.y(), 2 * q.z() - p.z())));
+    break;
+  }
+  const auto inverted_start = positions(c3t3);
+  thrown = false;
+  try { CGAL::gsm_optimize_mesh_3(c3t3, domain); } catch(const std::invalid_argument& e) {
+    thrown = std::string(e.what()).find("inverted") != std::string::npos;
+  }
+  VVM_CHECK(thrown);
+  VVM_CHECK(positions(c3t3) == inverted_start);
+}
+
+// the polyhedral cube [-1,1]^3 with its 12 edges and 8 corners protected
+typedef CGAL::Surface_mesh<K::Point_3> Surface_mesh;
+typedef CGAL::Polyhedral_mesh_domain_with_features_3<K, Surface_mesh> Cube_domain;
+typedef CGAL::Mesh_triangulation_3<Cube_domain>::type Cube_tr;
+typedef CGAL::Mesh_complex_3_in_triangulation_3<Cube_tr, Cube_domain::Corner_index, Cube_domain::Curve_index> Cube_c3t3;
+
+void test_cube_with_features()
+{
+  Surface_mesh sm;
+  std::vector<Surface_mesh::Vertex_index> v;
+  for(int i = 0; i < 8; ++i) v.push_back(sm.add_vertex(K::Point_3(i & 4 ? 1 : -1, i & 2 ? 1 : -1, i & 1 ? 1 : -1)));
+  const int quads[6][4] = {{0, 1, 3, 2}, {4, 6, 7, 5}, {0, 4, 5, 1}, {2, 3, 7, 6}, {0, 2, 6, 4}, {1, 5, 7, 3}};
+  for(const auto& q : quads) sm.add_face(v[q[0]], v[q[1]], v[q[2]], v[q[3]]);
+  CGAL::Polygon_mesh_processing::triangulate_faces(sm);
+  Cube_domain domain(sm);
+  domain.detect_features(60);
+  CGAL::Mesh_criteria_3<Cube_tr> criteria(params::edge_size = 0.3, params::facet_angle = 25,
+                                          params::facet_size = 0.3, params::facet_distance = 0.03,
+                                          params::cell_radius_edge_ratio = 3, params::cell_size = 0.3);
+  CGAL::get_default_random() = CGAL::Random(1);
+  Cube_c3t3 c3t3 = CGAL::make_mesh_3<Cube_c3t3>(domain, criteria, params::no_perturb(), params::no_exude());
+  const auto start = positions(c3t3);
+  const double before = GSM::mesh_quality_statistics(c3t3).min_dihedral_angle;
+  CGAL::gsm_optimize_mesh_3(c3t3, domain);
+  VVM_CHECK(complex_is_valid(c3t3));
+  const GSM::Mesh_quality_statistics after = GSM::mesh_quality_statistics(c3t3);
+  VVM_CHECK_EQUAL(after.number_of_inverted_cells, std::size_t(0));
+  VVM_CHECK(after.min_dihedral_angle > before + 5);
+  bool corners_fixed = true, on_edges = true, on_faces = true, curve_moved = false, surface_moved = false;
+  for(auto vh : c3t3.triangulation().finite_vertex_handles()) {
+    const Eigen::Vector3d p(vh->point().x(), vh->point().y(), vh->point().z());
+    int on_planes = 0;
+    for(int k = 0; k < 3; ++k) on_planes += std::abs(std::abs(p[k]) - 1) < 1e-9 ? 1 : 0;
+    switch(vh->in_dimension()) {
+    case 0: corners_fixed = corners_fixed && p == start.at(vh); break;
+    case 1: on_edges = on_edges && on_planes >= 2; curve_moved = curve_moved || p != start.at(vh); break;
+    case 2: on_faces = on_faces && on_planes >= 1; surface_moved = surface_moved || p != start.at(vh); break;
+    default: break;
+    }
+  }
+  VVM_CHECK(corners_fixed);
+  VVM_CHECK(on_edges && curve_moved);
+  VVM_CHECK(on_faces && surface_moved);
+}
+
+} // namespace
+
+int main()
+{
+  test_energies();
+  test_flip_2_3_and_3_2();
+  test_flip_4_4();
+  test_boundary_peel();
+  test_sphere_run();
+  test_bad_input();
+  test_cube_with_features();
+  return vvm_test::report("test_gsm_optimizer");
+}
