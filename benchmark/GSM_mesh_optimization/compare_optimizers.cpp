@@ -13,6 +13,7 @@
 
 #include <cstdlib>
 #include <exception>
+#include <filesystem>
 #include <iostream>
 #include <memory>
 #include <sstream>
@@ -23,8 +24,8 @@ namespace vvm_benchmark {
 
 std::vector<std::string> default_chains()
 {
-  return {"init", "lloyd", "odt", "perturb", "exude", "perturb+exude", "lloyd+perturb+exude",
-          "odt+perturb+exude"};
+  return {"init",          "lloyd",       "odt",   "perturb",   "exude", "perturb+exude",
+          "lloyd+perturb+exude", "odt+perturb+exude", "gsm", "odt+gsm", "lloyd+gsm"};
 }
 
 namespace {
@@ -40,7 +41,7 @@ const char* usage =
     "  --chains LIST       comma-separated chains of init, lloyd, odt, perturb, exude, gsm, gsm-esm\n"
     "                      joined by '+'\n"
     "                      (default: init,lloyd,odt,perturb,exude,perturb+exude,\n"
-    "                       lloyd+perturb+exude,odt+perturb+exude)\n"
+    "                       lloyd+perturb+exude,odt+perturb+exude,gsm,odt+gsm,lloyd+gsm)\n"
     "  --repeat N          runs per chain; optimizer times are medians (default 1)\n"
     "  --threads N         maximum number of threads (default: all cores)\n"
     "  --json FILE         write one JSON line per chain\n"
@@ -121,6 +122,11 @@ int main(int argc, char** argv)
     if(options.threads > 0)
       threads = std::make_unique<tbb::global_control>(
           tbb::global_control::max_allowed_parallelism, std::size_t(options.threads));
+    if(!options.out_dir.empty()) {
+      std::error_code error;
+      std::filesystem::create_directories(options.out_dir, error);
+      if(error) throw Input_error("cannot create '" + options.out_dir + "': " + error.message());
+    }
     if(is_implicit_domain_name(options.input))
       return run_implicit_domain(options);
     return run_polyhedral_domain(options);
