@@ -33,10 +33,7 @@ template <class C3T3>
 Eigen::Vector3d centroid_of(const C3T3& c3t3, typename C3T3::Triangulation::Cell_handle c)
 {
   Eigen::Vector3d s = Eigen::Vector3d::Zero();
-  for(int i = 0; i < 4; ++i) {
-    const auto& p = c3t3.triangulation().point(c, i);
-    s += Eigen::Vector3d(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
-  }
+  for(int i = 0; i < 4; ++i) s += to_eigen(c3t3.triangulation().point(c, i));
   return 0.25 * s;
 }
 
@@ -48,9 +45,7 @@ void check_input_mesh(const C3T3& c3t3)
   if(tr.dimension() != 3 || c3t3.number_of_cells_in_complex() == 0)
     throw std::invalid_argument("gsm_optimize_mesh_3: the complex has no cell");
   for(auto v : tr.finite_vertex_handles()) {
-    const auto& p = tr.point(v);
-    if(!std::isfinite(CGAL::to_double(p.x())) || !std::isfinite(CGAL::to_double(p.y())) ||
-       !std::isfinite(CGAL::to_double(p.z())))
+    if(!to_eigen(tr.point(v)).allFinite())
       throw std::invalid_argument("gsm_optimize_mesh_3: a vertex has a non-finite coordinate");
   }
   std::size_t inverted = 0;
@@ -76,18 +71,14 @@ double estimated_edge_length(const C3T3& c3t3)
   for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c) {
     std::array<Eigen::Vector3d, 4> p;
     for(int i = 0; i < 4; ++i) {
-      const auto& q = tr.point(c, i);
-      p[i] = Eigen::Vector3d(CGAL::to_double(q.x()), CGAL::to_double(q.y()), CGAL::to_double(q.z()));
+      p[i] = to_eigen(tr.point(c, i));
       vertices.insert(&*c->vertex(i));
     }
     volume += std::abs((p[1] - p[0]).dot((p[2] - p[0]).cross(p[3] - p[0]))) / 6.;
   }
   for(auto f = c3t3.facets_in_complex_begin(); f != c3t3.facets_in_complex_end(); ++f) {
     std::array<Eigen::Vector3d, 3> p;
-    for(int k = 0; k < 3; ++k) {
-      const auto& q = tr.point(f->first, (f->second + 1 + k) & 3);
-      p[k] = Eigen::Vector3d(CGAL::to_double(q.x()), CGAL::to_double(q.y()), CGAL::to_double(q.z()));
-    }
+    for(int k = 0; k < 3; ++k) p[k] = to_eigen(tr.point(f->first, (f->second + 1 + k) & 3));
     area += 0.5 * (p[1] - p[0]).cross(p[2] - p[0]).norm();
   }
   const double n = double(vertices.size());

@@ -19,6 +19,16 @@
 
 namespace CGAL {
 namespace GSM_mesh_optimization {
+namespace internal {
+
+/// a CGAL point (bare or weighted) as an Eigen vector of doubles
+template <class Point_3>
+Eigen::Vector3d to_eigen(const Point_3& p)
+{
+  return Eigen::Vector3d(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+}
+
+} // namespace internal
 
 /*!
  * \ingroup PkgGSMMeshOptimizationQuality
@@ -140,11 +150,8 @@ Tetrahedron_quality
 tetrahedron_quality(const Point_3& p0, const Point_3& p1, const Point_3& p2, const Point_3& p3,
                     const Eigen::Matrix3d& B = Eigen::Matrix3d::Identity())
 {
-  auto map = [&B](const Point_3& p) -> Eigen::Vector3d {
-    return B * Eigen::Vector3d(CGAL::to_double(p.x()), CGAL::to_double(p.y()),
-                               CGAL::to_double(p.z()));
-  };
-  return tetrahedron_quality({{map(p0), map(p1), map(p2), map(p3)}});
+  using internal::to_eigen;
+  return tetrahedron_quality({{B * to_eigen(p0), B * to_eigen(p1), B * to_eigen(p2), B * to_eigen(p3)}});
 }
 
 } // namespace GSM_mesh_optimization

@@ -9,6 +9,7 @@
 
 #include <CGAL/GSM_mesh_optimization/internal/Metric_field.h>
 #include <CGAL/GSM_mesh_optimization/shape_matching_energy.h>
+#include <CGAL/GSM_mesh_optimization/tetrahedron_quality.h>
 
 #include <CGAL/number_utils.h>
 
@@ -35,13 +36,9 @@ public:
 
   Eigen::Vector3d position(const Vertex_handle& v) const
   {
-    const auto& p = c3t3_.triangulation().point(v);
-    return Eigen::Vector3d(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+    return internal::to_eigen(c3t3_.triangulation().point(v));
   }
-  static Eigen::Vector3d to_eigen(const Bare_point& p)
-  {
-    return Eigen::Vector3d(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
-  }
+  static Eigen::Vector3d to_eigen(const Bare_point& p) { return internal::to_eigen(p); }
 
   const Metric_field& metric() const { return metric_; }
   Shape_matching_energy energy_kind() const { return energy_; }
