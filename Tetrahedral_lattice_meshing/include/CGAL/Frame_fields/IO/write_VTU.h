@@ -1,0 +1,98 @@
+// Copyright (c) 2026 VVM contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// A discrete frame field as a VTK unstructured grid, its three axes as
+// vector arrays, for ParaView glyphs; and its singular edges as lines.
+
+#ifndef CGAL_FRAME_FIELDS_IO_WRITE_VTU_H
+#define CGAL_FRAME_FIELDS_IO_WRITE_VTU_H
+
+#include <CGAL/Frame_fields/Discrete_frame_field_3.h>
+
+#include <cstddef>
+#include <ostream>
+#include <stdexcept>
+#include <vector>
+
+namespace CGAL {
+namespace Frame_fields {
+namespace IO {
+
+/*!
+ * \ingroup PkgTetrahedralLatticeMeshingFrameFieldsIO
+ * writes `field` to `os` as an ASCII VTK XML unstructured grid (`.vtu`): its points, its
+ * tetrahedra (or, if it has none, one vertex cell per point), and the three axes of the
+ * frames (the columns of \f$ T \f$) as the vector arrays `axis_1`, `axis_2`, `axis_3`,
+ * point data for a field on vertices, cell data for a field on cells. In ParaView, a
+ * Glyph filter per array shows the frames.
+ * \throws std::runtime_error if the stream fails
+ */
+template <class GeomTraits>
+void write_VTU(std::ostream& os, const Discrete_frame_field_3<GeomTraits>& field)
+{
+  const auto& points = field.points();
+  const auto& cells = field.cells();
+  const bool have_cells = !cells.empty();
+  const std::size_t n_cells = have_cells ? cells.size() : points.size();
+  os.precision(17);
+  os << "<?xml version=\"1.0\"?>\n"
+     << "<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
+     << "<UnstructuredGrid>\n<Piece NumberOfPoints=\"" << points.size() << "\" NumberOfCells=\""
+     << n_cells << "\">\n<Points>\n<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n";
+  for(const auto& p : points)
+    os << CGAL::to_double(p.x()) << " " << CGAL::to_double(p.y()) << " " << CGAL::to_double(p.z()) << "\n";
+  os << "</DataArray>\n</Points>\n<Cells>\n<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
+  if(have_cells)
+    for(const auto& c : cells) os << c[0] << " " << c[1] << " " << c[2] << " " << c[3] << "\n";
+  else
+    for(std::size_t i = 0; i < points.size(); ++i) os << i << "\n";
+  os << "</DataArray>\n<DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n";
+  for(std::size_t i = 1; i <= n_cells; ++i) os << (have_cells ? 4 * i : i) << "\n";
+  os << "</DataArray>\n<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n";
+  for(std::size_t i = 0; i < n_cells; ++i) os << (have_cells ? 10 : 1) << "\n"; // VTK_TETRA, VTK_VERTEX
+  os << "</DataArray>\n</Cells>\n";
+  // a field on cells with no tets cannot exist (the constructor refuses it)
+  const char* section = field.location() == Frame_location::VERTICES ? "PointData" : "CellData";
+  os << "<" << section << " Vectors=\"axis_1\">\n";
+  for(int a = 0; a < 3; ++a) {
+    os << "<DataArray type=\"Float64\" Name=\"axis_" << a + 1
+       << "\" NumberOfComponents=\"3\" format=\"ascii\">\n";
+    for(const auto& T : field.frames()) os << T(0, a) << " " << T(1, a) << " " << T(2, a) << "\n";
+    os << "</DataArray>\n";
+  }
+  os << "</" << section << ">\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
+  if(!os) throw std::runtime_error("write_VTU: the stream failed");
+}
+
+/*!
+ * \ingroup PkgTetrahedralLatticeMeshingFrameFieldsIO
+ * writes the segments `edges` (pairs of indices into `points`) to `os` as an ASCII VTK
+ * XML unstructured grid of lines, e.g. the singular edges of a generated cross field:
+ * `write_edges_VTU(os, g.field.points(), g.singular_edges)`.
+ * \throws std::runtime_error if the stream fails
+ */
+template <class Point_3, class Edge>
+void write_edges_VTU(std::ostream& os, const std::vector<Point_3>& points, const std::vector<Edge>& edges)
+{
+  os.precision(17);
+  os << "<?xml version=\"1.0\"?>\n"
+     << "<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
+     << "<UnstructuredGrid>\n<Piece NumberOfPoints=\"" << points.size() << "\" NumberOfCells=\""
+     << edges.size() << "\">\n<Points>\n<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n";
+  for(const auto& p : points)
+    os << CGAL::to_double(p.x()) << " " << CGAL::to_double(p.y()) << " " << CGAL::to_double(p.z()) << "\n";
+  os << "</DataArray>\n</Points>\n<Cells>\n<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
+  for(const auto& e : edges) os << e[0] << " " << e[1] << "\n";
+  os << "</DataArray>\n<DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n";
+  for(std::size_t i = 1; i <= edges.size(); ++i) os << 2 * i << "\n";
+  os << "</DataArray>\n<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n";
+  for(std::size_t i = 0; i < edges.size(); ++i) os << 3 << "\n"; // VTK_LINE
+  os << "</DataArray>\n</Cells>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
+  if(!os) throw std::runtime_error("write_edges_VTU: the stream failed");
+}
+
+} // namespace IO
+} // namespace Frame_fields
+} // namespace CGAL
+
+#endif // CGAL_FRAME_FIELDS_IO_WRITE_VTU_H

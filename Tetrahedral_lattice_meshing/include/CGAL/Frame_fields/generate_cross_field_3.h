@@ -1,0 +1,204 @@
+// Copyright (c) 2026 VVM contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// generate_cross_field_3(): a smooth cross field aligned with the boundary
+// and the sharp edges of a tetrahedral mesh, for users who have no frame field.
+
+#ifndef CGAL_FRAME_FIELDS_GENERATE_CROSS_FIELD_3_H
+#define CGAL_FRAME_FIELDS_GENERATE_CROSS_FIELD_3_H
+
+#include <CGAL/Frame_fields/Discrete_frame_field_3.h>
+#include <CGAL/Frame_fields/internal/Cross_field_solver.h>
+#include <CGAL/Frame_fields/internal/Indexed_tetrahedral_mesh.h>
+#include <CGAL/Frame_fields/parameters.h>
+
+#include <CGAL/Mesh_complex_3_in_triangulation_3.h>
+#include <CGAL/Kernel_traits.h>
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/Triangulation_3.h>
+
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <iostream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Frame_fields {
+
+/*!
+ * \ingroup PkgTetrahedralLatticeMeshingFrameFields
+ * The output of `generate_cross_field_3()`: the field, one frame per vertex, and
+ * what it was aligned with and where it is singular. Indices refer to
+ * `field.points()`.
+ */
+template <class GeomTraits>
+struct Generated_cross_field_3
+{
+  /// the frames: rotations times `edge_length`, with the mesh's points and cells
+  Discrete_frame_field_3<GeomTraits> field;
+  /// the facets the frames were aligned with (the boundary; in a complex, all its facets)
+  std::vector<std::array<std::size_t, 3>> boundary_facets;
+  /// the sharp edges the frames were aligned with
+  std::vector<std::array<std::size_t, 2>> feature_edges;
+  /// the interior edges around which the cell frames do not match (the holonomy of the
+  /// cube-symmetry matchings of consecutive cells is not the identity)
+  std::vector<std::array<std::size_t, 2>> singular_edges;
+  /// the edges whose ring of cells closes inside the domain
+  std::size_t number_of_interior_edges = 0;
+  /// all edges of the mesh's cells
+  std::size_t number_of_edges = 0;
+  /// \f$ \sum_{edges\ ij} |c_i - c_j|^2 \f$ over the unit SH vectors \f$ c \f$ of the frames
+  double smoothness_energy = 0;
+};
+
+namespace internal {
+
+template <class Point_3, class NamedParameters>
+Generated_cross_field_3<typename Kernel_traits<Point_3>::Kernel>
+generate_cross_field(const Indexed_tetrahedral_mesh<Point_3>& mesh, const NamedParameters& np);
+
+} // namespace internal
+
+/*!
+ * \ingroup PkgTetrahedralLatticeMeshingFrameFields
+ * generates a smooth cross field on the cells in the complex of `c3t3`, one frame per
+ * vertex, with one axis along the normal of every facet in the complex and along every
+ * edge in the complex (sharp features), by the method of Ray et al. 2016: each frame
+ * as 9 band-4 spherical-harmonic coefficients; the boundary vertices restricted to
+ * frames with one axis on the (area-weighted) normal, and the vertices of sharp edges
+ * to frames with one axis on the edge; a sparse least-squares solve for smoothness
+ * (\f$ \sum_{ij} |c_i - c_j|^2 \f$ over the mesh edges); the projection of each vertex
+ * onto its nearest valid frame; then rounds of diffusion and projection. Corners
+ * (where sharp edges meet or turn by more than 45 degrees) are left free.
+ *
+ * \tparam C3T3 `Mesh_complex_3_in_triangulation_3`
+ * \tparam NamedParameters a sequence of named parameters
+ *
+ * \cgalNamedParamsBegin
+ *   \cgalParamNBegin{number_of_iterations}
+ *     \cgalParamDescription{the number of diffuse-and-project rounds after the least-squares solve}
+ *     \cgalParamType{`int`}
+ *     \cgalParamDefault{10}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{Frame_fields::parameters::edge_length}
+ *     \cgalParamDescription{the length of the three axes of every frame}
+ *     \cgalParamType{`double`}
+ *     \cgalParamDefault{1}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{verbose}
+ *     \cgalParamDescription{progress on `std::cerr`}
+ *     \cgalParamType{`bool`}
+ *     \cgalParamDefault{false}
+ *   \cgalParamNEnd
+ * \cgalNamedParamsEnd
+ *
+ * \throws std::invalid_argument if the complex has no cell or no facet, a vertex is not
+ *   finite, or a parameter is out of range
+ */
+template <class Tr, class CornerIndex, class CurveIndex,
+          class NamedParameters = CGAL::parameters::Default_named_parameters>
+Generated_cross_field_3<typename Kernel_traits<typename Tr::Geom_traits::Point_3>::Kernel>
+generate_cross_field_3(const Mesh_complex_3_in_triangulation_3<Tr, CornerIndex, CurveIndex>& c3t3,
+                       const NamedParameters& np = CGAL::parameters::default_values())
+{
+  return internal::generate_cross_field(internal::indexed_mesh(c3t3, 0.), np);
+}
+
+/*!
+ * \ingroup PkgTetrahedralLatticeMeshingFrameFields
+ * the same on the finite cells of a triangulation: the boundary is the convex hull, and
+ * its edges whose facet normals differ by more than `Frame_fields::parameters::features_angle`
+ * (degrees, default 60; 0 for none) are sharp.
+ *
+ * \tparam Triangulation a `Triangulation_3` (`Delaunay_triangulation_3`, `Regular_triangulation_3`, ...)
+ *
+ * \cgalNamedParamsBegin
+ *   \cgalParamNBegin{number_of_iterations}
+ *     \cgalParamDescription{the number of diffuse-and-project rounds}
+ *     \cgalParamType{`int`}
+ *     \cgalParamDefault{10}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{Frame_fields::parameters::edge_length}
+ *     \cgalParamDescription{the length of the three axes of every frame}
+ *     \cgalParamType{`double`}
+ *     \cgalParamDefault{1}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{Frame_fields::parameters::features_angle}
+ *     \cgalParamDescription{hull edges whose facet normals differ by more than this (degrees) are sharp}
+ *     \cgalParamType{`double`}
+ *     \cgalParamDefault{60}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{verbose}
+ *     \cgalParamDescription{progress on `std::cerr`}
+ *     \cgalParamType{`bool`}
+ *     \cgalParamDefault{false}
+ *   \cgalParamNEnd
+ * \cgalNamedParamsEnd
+ *
+ * \throws std::invalid_argument as above
+ */
+template <class GT, class TDS, class Lds,
+          class NamedParameters = CGAL::parameters::Default_named_parameters>
+Generated_cross_field_3<typename Kernel_traits<typename GT::Point_3>::Kernel>
+generate_cross_field_3(const Triangulation_3<GT, TDS, Lds>& triangulation,
+                       const NamedParameters& np = CGAL::parameters::default_values())
+{
+  const double angle = CGAL::parameters::choose_parameter(
+      CGAL::parameters::get_parameter(np, internal_np::features_angle), 60.);
+  if(!(angle >= 0 && angle <= 180))
+    throw std::invalid_argument("generate_cross_field_3: features_angle must be in [0, 180] degrees");
+  return internal::generate_cross_field(internal::indexed_mesh(triangulation, angle), np);
+}
+
+namespace internal {
+
+template <class Point_3, class NamedParameters>
+Generated_cross_field_3<typename Kernel_traits<Point_3>::Kernel>
+generate_cross_field(const Indexed_tetrahedral_mesh<Point_3>& mesh, const NamedParameters& np)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  typedef typename Kernel_traits<Point_3>::Kernel K;
+  const int rounds = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), 10);
+  const double edge_length = choose_parameter(get_parameter(np, internal_np::edge_length), 1.);
+  const bool verbose = choose_parameter(get_parameter(np, CGAL::internal_np::verbose), false);
+  if(rounds < 0) throw std::invalid_argument("generate_cross_field_3: number_of_iterations must be >= 0");
+  if(!(edge_length > 0) || !std::isfinite(edge_length))
+    throw std::invalid_argument("generate_cross_field_3: edge_length must be positive and finite");
+  mesh.check("generate_cross_field_3");
+  if(mesh.boundary_facets.empty())
+    throw std::invalid_argument("generate_cross_field_3: the mesh has no boundary facet to align with");
+
+  Cross_field_solver solver(mesh.xyz, mesh.cells, mesh.boundary_facets, mesh.feature_edges);
+  if(verbose)
+    std::cerr << "generate_cross_field_3: " << mesh.points.size() << " vertices ("
+              << solver.number_of_constrained_vertices() << " constrained), " << mesh.cells.size()
+              << " cells, " << mesh.boundary_facets.size() << " boundary facets, "
+              << mesh.feature_edges.size() << " sharp edges\n";
+  Cross_field_solution s = solver.solve(rounds, verbose);
+
+  Generated_cross_field_3<K> out;
+  std::vector<Eigen::Matrix3d> frames(s.vertex_frames.size());
+  for(std::size_t v = 0; v < frames.size(); ++v) frames[v] = edge_length * s.vertex_frames[v];
+  out.field = Discrete_frame_field_3<K>(mesh.points, mesh.cells, std::move(frames), Frame_location::VERTICES);
+  out.boundary_facets = mesh.boundary_facets;
+  out.feature_edges = mesh.feature_edges;
+  out.singular_edges = std::move(s.singularities.singular_edges);
+  out.number_of_interior_edges = s.singularities.number_of_interior_edges;
+  out.number_of_edges = s.edges.size();
+  out.smoothness_energy = s.smoothness_energy;
+  if(verbose)
+    std::cerr << "generate_cross_field_3: " << out.singular_edges.size() << " singular edges of "
+              << out.number_of_interior_edges << " interior edges, smoothness energy "
+              << out.smoothness_energy << "\n";
+  return out;
+}
+
+} // namespace internal
+} // namespace Frame_fields
+} // namespace CGAL
+
+#endif // CGAL_FRAME_FIELDS_GENERATE_CROSS_FIELD_3_H

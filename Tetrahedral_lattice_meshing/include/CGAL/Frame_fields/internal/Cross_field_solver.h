@@ -1,0 +1,250 @@
+// Copyright (c) 2026 VVM contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The boundary-aligned smooth cross field of Ray et al. 2016 on an indexed
+// tetrahedral mesh, one frame per vertex:
+// 1. frames as 9 band-4 SH coefficients; a boundary vertex is restricted to the
+//    frames with one axis on its normal, a vertex of a sharp edge to those with
+//    one axis on the edge (2 unknowns each: cos 4t and sin 4t, left free);
+// 2. least squares of sum over mesh edges |c_i - c_j|^2 (sparse, Eigen CG);
+// 3. every vertex projected to its nearest valid (constrained) frame;
+// 4. rounds of diffusion (each vertex to the sum of itself and its neighbours)
+//    and projection, which make the field smoother at the projected frames.
+
+#ifndef CGAL_FRAME_FIELDS_INTERNAL_CROSS_FIELD_SOLVER_H
+#define CGAL_FRAME_FIELDS_INTERNAL_CROSS_FIELD_SOLVER_H
+
+#include <CGAL/Frame_fields/internal/L4_spherical_harmonics.h>
+#include <CGAL/Frame_fields/internal/Singular_edges.h>
+
+#include <Eigen/Core>
+#include <Eigen/IterativeLinearSolvers>
+#include <Eigen/SparseCore>
+
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#endif
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <iostream>
+#include <memory>
+#include <stdexcept>
+#include <vector>
+
+namespace CGAL {
+namespace Frame_fields {
+namespace internal {
+
+// f(i) for i in [0, n), in parallel when TBB is there (each i independent)
+template <class F>
+void for_each_index(std::size_t n, const F& f)
+{
+#ifdef CGAL_LINKED_WITH_TBB
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 256),
+                    [&](const tbb::blocked_range<std::size_t>& r) {
+                      for(std::size_t i = r.begin(); i != r.end(); ++i) f(i);
+                    });
+#else
+  for(std::size_t i = 0; i < n; ++i) f(i);
+#endif
+}
+
+struct Cross_field_solution
+{
+  std::vector<Eigen::Matrix3d> vertex_frames; // rotations
+  std::vector<SH_vector> coefficients;        // their SH vectors
+  std::vector<std::array<std::size_t, 2>> edges;
+  Singular_edge_report singularities;
+  double smoothness_energy = 0; // sum over edges of |c_i - c_j|^2
+};
+
+class Cross_field_solver
+{
+  typedef Eigen::Matrix<double, 9, Eigen::Dynamic, Eigen::ColMajor, 9, 9> Parametrization;
+
+public:
+  Cross_field_solver(const std::vector<Eigen::Vector3d>& xyz,
+                     const std::vector<std::array<std::size_t, 4>>& cells,
+                     const std::vector<std::array<std::size_t, 3>>& boundary_facets,
+                     const std::vector<std::array<std::size_t, 2>>& feature_edges)
+    : xyz_(xyz), cells_(cells), boundary_facets_(boundary_facets)
+  {
+    const std::size_t n = xyz.size();
+    for(const auto& c : cells)
+      for(int i = 0; i < 4; ++i)
+        for(int j = i + 1; j < 4; ++j)
+          edges_.push_back({{(std::min)(c[std::size_t(i)], c[std::size_t(j)]),
+                             (std::max)(c[std::size_t(i)], c[std::size_t(j)])}});
+    std::sort(edges_.begin(), edges_.end());
+    edges_.erase(std::unique(edges_.begin(), edges_.end()), edges_.end());
+    neighbours_.assign(n, {});
+    for(const auto& e : edges_) {
+      neighbours_[e[0]].push_back(e[1]);
+      neighbours_[e[1]].push_back(e[0]);
+    }
+    classify_vertices(feature_edges);
+  }
+
+  std::size_t number_of_constrained_vertices() const { return n_constrained_; }
+
+  Cross_field_solution solve(int diffusion_rounds, bool verbose) const
+  {
+    const L4_frames& frames = L4_frames::instance();
+    const std::size_t n = xyz_.size();
+    std::vector<SH_vector> c = least_squares(verbose);
+    Cross_field_solution s;
+    s.vertex_frames.resize(n);
+    s.coefficients.resize(n);
+    for_each_index(n, [&](std::size_t v) { s.vertex_frames[v] = nearest_frame(v, c[v]); });
+    for_each_index(n, [&](std::size_t v) { s.coefficients[v] = frames.frame(s.vertex_frames[v]); });
+    for(int round = 0; round < diffusion_rounds; ++round) {
+      for_each_index(n, [&](std::size_t v) {
+        SH_vector q = s.coefficients[v];
+        for(std::size_t w : neighbours_[v]) q += s.coefficients[w];
+        c[v] = q;
+      });
+      for_each_index(n, [&](std::size_t v) {
+        s.vertex_frames[v] = nearest_frame(v, c[v]);
+      });
+      for_each_index(n, [&](std::size_t v) { s.coefficients[v] = frames.frame(s.vertex_frames[v]); });
+      if(verbose) std::cerr << "  diffuse and project round " << round + 1 << ": energy " << energy(s.coefficients) << "\n";
+    }
+    s.smoothness_energy = energy(s.coefficients);
+    s.edges = edges_;
+    // one frame per cell, interpolated at its centroid, for the matchings
+    std::vector<Eigen::Matrix3d> cell_frames(cells_.size());
+    for_each_index(cells_.size(), [&](std::size_t i) {
+      SH_vector q = SH_vector::Zero();
+      for(std::size_t v : cells_[i]) q += s.coefficients[v];
+      cell_frames[i] = frames.nearest_frame(q);
+    });
+    s.singularities = singular_edges(cells_, cell_frames, boundary_facets_);
+    return s;
+  }
+
+private:
+  // an axis direction per constrained vertex: the normal on the boundary, the
+  // tangent on a sharp edge; corners (not 2 sharp edges, or a sharp turn) stay free
+  void classify_vertices(const std::vector<std::array<std::size_t, 2>>& feature_edges)
+  {
+    const std::size_t n = xyz_.size();
+    std::vector<Eigen::Matrix3d> normal_tensor(n, Eigen::Matrix3d::Zero());
+    std::vector<char> on_boundary(n, 0);
+    for(const auto& f : boundary_facets_) {
+      const Eigen::Vector3d N = (xyz_[f[1]] - xyz_[f[0]]).cross(xyz_[f[2]] - xyz_[f[0]]);
+      const double len = N.norm();
+      for(std::size_t v : f) {
+        on_boundary[v] = 1;
+        if(len > 0) normal_tensor[v] += N * N.transpose() / (2 * len); // area n n^T
+      }
+    }
+    std::vector<std::vector<std::size_t>> sharp(n);
+    for(const auto& e : feature_edges) {
+      sharp[e[0]].push_back(e[1]);
+      sharp[e[1]].push_back(e[0]);
+    }
+    axis_.assign(n, Eigen::Vector3d::Zero());
+    for(std::size_t v = 0; v < n; ++v) {
+      if(sharp[v].size() == 2) {
+        const Eigen::Vector3d d0 = (xyz_[v] - xyz_[sharp[v][0]]).normalized();
+        const Eigen::Vector3d d1 = (xyz_[sharp[v][1]] - xyz_[v]).normalized();
+        if(d0.dot(d1) > std::cos(3.14159265358979323846 / 4)) axis_[v] = (d0 + d1).normalized();
+      } else if(sharp[v].empty() && on_boundary[v] && normal_tensor[v].trace() > 0) {
+        Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(normal_tensor[v]);
+        axis_[v] = eig.eigenvectors().col(2);
+      }
+      if(!axis_[v].allFinite()) axis_[v].setZero();
+    }
+    constrained_.resize(n);
+    n_constrained_ = 0;
+    for(std::size_t v = 0; v < n; ++v)
+      if(axis_[v].squaredNorm() > 0) {
+        constrained_[v] = std::make_shared<Axis_constrained_frames>(axis_[v]);
+        ++n_constrained_;
+      }
+  }
+
+  Eigen::Matrix3d nearest_frame(std::size_t v, const SH_vector& q) const
+  {
+    return constrained_[v] ? constrained_[v]->nearest_frame(q) : L4_frames::instance().nearest_frame(q);
+  }
+
+  // c_v = A_v x_v + b_v: the identity for a free vertex, 9x2 for a constrained one
+  Parametrization A(std::size_t v) const
+  {
+    if(constrained_[v]) return constrained_[v]->basis;
+    return Parametrization(SH_matrix::Identity());
+  }
+  SH_vector b(std::size_t v) const { return constrained_[v] ? constrained_[v]->offset : SH_vector::Zero(); }
+
+  std::vector<SH_vector> least_squares(bool verbose) const
+  {
+    const std::size_t n = xyz_.size();
+    std::vector<Eigen::Index> offset(n + 1, 0);
+    for(std::size_t v = 0; v < n; ++v) offset[v + 1] = offset[v] + (constrained_[v] ? 2 : 9);
+    const Eigen::Index size = offset[n];
+    std::vector<Eigen::Triplet<double>> triplets;
+    Eigen::VectorXd rhs = Eigen::VectorXd::Zero(size);
+    auto add_block = [&](std::size_t u, std::size_t v, double sign) {
+      const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 9, 9> M = A(u).transpose() * A(v);
+      for(Eigen::Index r = 0; r < M.rows(); ++r)
+        for(Eigen::Index k = 0; k < M.cols(); ++k)
+          if(M(r, k) != 0) triplets.emplace_back(offset[u] + r, offset[v] + k, sign * M(r, k));
+    };
+    // sum over edges |A_i x_i + b_i - A_j x_j - b_j|^2
+    for(const auto& e : edges_) {
+      const std::size_t i = e[0], j = e[1];
+      add_block(i, i, 1);
+      add_block(j, j, 1);
+      add_block(i, j, -1);
+      add_block(j, i, -1);
+      const SH_vector d = b(i) - b(j);
+      rhs.segment(offset[i], offset[i + 1] - offset[i]) -= A(i).transpose() * d;
+      rhs.segment(offset[j], offset[j + 1] - offset[j]) += A(j).transpose() * d;
+    }
+    // a free part with no constrained vertex would be singular: pin it softly to 0
+    for(Eigen::Index k = 0; k < size; ++k) triplets.emplace_back(k, k, 1e-9);
+    Eigen::SparseMatrix<double> M(size, size);
+    M.setFromTriplets(triplets.begin(), triplets.end());
+    triplets.clear();
+    triplets.shrink_to_fit();
+    Eigen::ConjugateGradient<Eigen::SparseMatrix<double>, Eigen::Lower | Eigen::Upper> cg;
+    cg.setTolerance(1e-8);
+    cg.setMaxIterations(5000);
+    cg.compute(M);
+    const Eigen::VectorXd x = cg.solve(rhs);
+    if(verbose)
+      std::cerr << "  least squares: " << size << " unknowns, " << M.nonZeros() << " non-zeros, CG "
+                << cg.iterations() << " iterations, error " << cg.error() << "\n";
+    std::vector<SH_vector> c(n);
+    for(std::size_t v = 0; v < n; ++v)
+      c[v] = A(v) * x.segment(offset[v], offset[v + 1] - offset[v]) + b(v);
+    return c;
+  }
+
+  double energy(const std::vector<SH_vector>& c) const
+  {
+    double e = 0;
+    for(const auto& edge : edges_) e += (c[edge[0]] - c[edge[1]]).squaredNorm();
+    return e;
+  }
+
+  const std::vector<Eigen::Vector3d>& xyz_;
+  const std::vector<std::array<std::size_t, 4>>& cells_;
+  const std::vector<std::array<std::size_t, 3>>& boundary_facets_;
+  std::vector<std::array<std::size_t, 2>> edges_;
+  std::vector<std::vector<std::size_t>> neighbours_;
+  std::vector<Eigen::Vector3d> axis_;
+  std::vector<std::shared_ptr<const Axis_constrained_frames>> constrained_;
+  std::size_t n_constrained_ = 0;
+};
+
+} // namespace internal
+} // namespace Frame_fields
+} // namespace CGAL
+
+#endif // CGAL_FRAME_FIELDS_INTERNAL_CROSS_FIELD_SOLVER_H

@@ -1,0 +1,279 @@
+// Copyright (c) 2026 VVM contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// generate_frame_field INPUT [--vertices N] [--features-angle DEG] [--out FILE.vtu]
+//                      [--frames FILE] [--singular FILE.vtu] [--json FILE] [--iterations K]
+//                      [--seed S] [--verbose]
+//
+// Meshes the closed surface INPUT with make_mesh_3 at about N vertices (sharp
+// edges protected above DEG), generates the boundary-aligned cross field on
+// it, writes the field (VTU for ParaView, and/or the text format), its
+// singular edges and a JSON report. Exit code 2 with a message on bad input or options.
+
+// make_mesh_3.h first: with CGAL_LINKED_WITH_TBB, Mesh_3 relies on TBB headers it includes
+#include <CGAL/make_mesh_3.h>
+
+#include <CGAL/Frame_fields/IO/frame_field_text_format.h>
+#include <CGAL/Frame_fields/IO/write_VTU.h>
+#include <CGAL/Frame_fields/boundary_alignment.h>
+#include <CGAL/Frame_fields/generate_cross_field_3.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Mesh_complex_3_in_triangulation_3.h>
+#include <CGAL/Mesh_criteria_3.h>
+#include <CGAL/Mesh_triangulation_3.h>
+#include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
+#include <CGAL/Polygon_mesh_processing/measure.h>
+#include <CGAL/Polygon_mesh_processing/self_intersections.h>
+#include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
+#include <CGAL/Polyhedral_mesh_domain_with_features_3.h>
+#include <CGAL/Random.h>
+#include <CGAL/Real_timer.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/helpers.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <iostream>
+#include <set>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+
+typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+typedef CGAL::Surface_mesh<K::Point_3> Surface_mesh;
+typedef CGAL::Polyhedral_mesh_domain_with_features_3<K, Surface_mesh> Domain;
+typedef CGAL::Mesh_triangulation_3<Domain, CGAL::Default, CGAL::Sequential_tag>::type Tr;
+typedef CGAL::Mesh_complex_3_in_triangulation_3<Tr, Domain::Corner_index, Domain::Curve_index> C3T3;
+typedef CGAL::Mesh_criteria_3<Tr> Mesh_criteria;
+namespace PMP = CGAL::Polygon_mesh_processing;
+namespace FF = CGAL::Frame_fields;
+
+// bad input or options: exit code 2
+struct Usage_error : std::runtime_error
+{
+  using std::runtime_error::runtime_error;
+};
+
+const char* usage =
+    "usage: generate_frame_field INPUT [--vertices N] [--features-angle DEG] [--out FILE.vtu]\n"
+    "                            [--frames FILE] [--singular FILE.vtu] [--json FILE] [--iterations K]\n"
+    "                            [--seed S] [--verbose]\n"
+    "  INPUT             closed triangle surface (OFF, OBJ, PLY, STL, ...)\n"
+    "  --vertices N      about N mesh vertices (default 10000)\n"
+    "  --features-angle  protect and align with the edges sharper than DEG degrees (default 0: none)\n"
+    "  --out FILE.vtu    the field for ParaView (axis_1..3 point arrays)\n"
+    "  --frames FILE     the field in the VVM frame field text format\n"
+    "  --singular FILE   the singular edges as VTU lines\n"
+    "  --json FILE       the report (also printed on stdout)\n"
+    "  --iterations K    diffuse-and-project rounds (default 10)\n"
+    "  --seed S          random seed of make_mesh_3 (default 0)\n";
+
+struct Options
+{
+  std::string input, vtu, frames, singular, json;
+  long vertices = 10000;
+  double features_angle = 0;
+  int iterations = 10;
+  unsigned seed = 0;
+  bool verbose = false;
+};
+
+double parse_number(const std::string& option, const std::string& text)
+{
+  std::size_t used = 0;
+  double x = 0;
+  try { x = std::stod(text, &used); } catch(...) { used = 0; }
+  if(used != text.size() || !std::isfinite(x))
+    throw Usage_error(option + " needs a finite number, not '" + text + "'");
+  return x;
+}
+
+Options parse(int argc, char** argv)
+{
+  Options o;
+  for(int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    auto value = [&]() -> std::string {
+      if(i + 1 >= argc) throw Usage_error(a + " needs a value");
+      return argv[++i];
+    };
+    if(a == "--vertices") {
+      const double n = parse_number(a, value());
+      if(!(n >= 1) || n != std::floor(n) || n > 1e8) throw Usage_error("--vertices must be a positive integer");
+      o.vertices = long(n);
+    } else if(a == "--features-angle") {
+      o.features_angle = parse_number(a, value());
+      if(o.features_angle < 0 || o.features_angle > 180)
+        throw Usage_error("--features-angle must be in [0, 180] degrees");
+    } else if(a == "--iterations") {
+      const double k = parse_number(a, value());
+      if(!(k >= 0) || k != std::floor(k) || k > 1e6) throw Usage_error("--iterations must be a non-negative integer");
+      o.iterations = int(k);
+    } else if(a == "--seed") {
+      const double s = parse_number(a, value());
+      if(!(s >= 0) || s != std::floor(s) || s > 4e9) throw Usage_error("--seed must be a non-negative integer");
+      o.seed = unsigned(s);
+    } else if(a == "--out") o.vtu = value();
+    else if(a == "--frames") o.frames = value();
+    else if(a == "--singular") o.singular = value();
+    else if(a == "--json") o.json = value();
+    else if(a == "--verbose") o.verbose = true;
+    else if(a == "--help" || a == "-h") {
+      std::cout << usage;
+      std::exit(0);
+    } else if(!a.empty() && a[0] == '-') throw Usage_error("unknown option '" + a + "'");
+    else if(o.input.empty()) o.input = a;
+    else throw Usage_error("more than one input ('" + o.input + "', '" + a + "')");
+  }
+  if(o.input.empty()) throw Usage_error("no input surface");
+  return o;
+}
+
+// a closed, non self-intersecting triangle surface enclosing a volume, or a Usage_error
+Surface_mesh read_closed_surface(const std::string& path)
+{
+  std::ifstream probe(path, std::ios::binary | std::ios::ate);
+  if(!probe) throw Usage_error("cannot open '" + path + "'");
+  if(probe.tellg() <= 0) throw Usage_error("'" + path + "' is empty");
+  Surface_mesh sm;
+  if(!CGAL::IO::read_polygon_mesh(path, sm) || sm.number_of_faces() == 0)
+    throw Usage_error("'" + path + "' is not a readable polygon mesh with faces");
+  for(auto v : sm.vertices())
+    if(!std::isfinite(sm.point(v).x()) || !std::isfinite(sm.point(v).y()) || !std::isfinite(sm.point(v).z()))
+      throw Usage_error("'" + path + "' has a non-finite coordinate");
+  if(!CGAL::is_triangle_mesh(sm)) PMP::triangulate_faces(sm);
+  if(!CGAL::is_closed(sm)) throw Usage_error("the surface in '" + path + "' is open (it has border edges)");
+  if(PMP::does_self_intersect(sm)) throw Usage_error("the surface in '" + path + "' self-intersects");
+  if(!(std::abs(PMP::volume(sm)) > 0)) throw Usage_error("the surface in '" + path + "' encloses no volume");
+  return sm;
+}
+
+std::size_t vertices_in_cells(const C3T3& c3t3)
+{
+  std::set<Tr::Vertex_handle> vertices;
+  for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c)
+    for(int i = 0; i < 4; ++i) vertices.insert(c->vertex(i));
+  return vertices.size();
+}
+
+// make_mesh_3 with uniform size s (no optimizers: the field does not need them)
+C3T3 mesh_with_size(const Domain& domain, double s, unsigned seed)
+{
+  namespace params = CGAL::parameters;
+  Mesh_criteria criteria(params::edge_size = s, params::facet_angle = 25, params::facet_size = s,
+                         params::facet_distance = s / 10., params::cell_radius_edge_ratio = 3,
+                         params::cell_size = s);
+  CGAL::get_default_random() = CGAL::Random(seed);
+  return CGAL::make_mesh_3<C3T3>(domain, criteria, params::no_perturb(), params::no_exude());
+}
+
+// the mesh whose vertex count is nearest to `target` among a few sizes, each
+// guessed from the last two by a power law n ~ s^-k
+C3T3 mesh_with_about(const Domain& domain, double volume, long target, unsigned seed, double& size, bool verbose)
+{
+  double s = std::cbrt(6 * volume / double(target)); // ~6 tets of volume s^3/6 per vertex
+  double s_prev = 0, n_prev = 0, best_gap = 1e300;
+  C3T3 best;
+  for(int attempt = 0; attempt < 8; ++attempt) {
+    C3T3 c3t3 = mesh_with_size(domain, s, seed);
+    const double n = double(vertices_in_cells(c3t3));
+    if(verbose) std::cerr << "  make_mesh_3 size " << s << ": " << n << " vertices\n";
+    if(n == 0) throw Usage_error("make_mesh_3 produced no cell");
+    const double gap = std::abs(std::log(n / double(target)));
+    if(gap < best_gap) best_gap = gap, best = std::move(c3t3), size = s;
+    if(gap < std::log(1.05)) break;
+    double k = 3;
+    if(n_prev > 0 && n != n_prev) k = std::min(3.5, std::max(1.5, -std::log(n / n_prev) / std::log(s / s_prev)));
+    s_prev = s, n_prev = n;
+    s *= std::pow(n / double(target), 1 / k);
+  }
+  return best;
+}
+
+std::string stem(const std::string& path)
+{
+  const std::string name = path.substr(path.find_last_of("/\\") + 1);
+  return name.substr(0, name.find_last_of('.'));
+}
+
+int run(const Options& o)
+{
+  CGAL::Real_timer total;
+  total.start();
+  const Surface_mesh surface = read_closed_surface(o.input);
+  Domain domain(surface);
+  if(o.features_angle > 0) domain.detect_features(o.features_angle);
+
+  CGAL::Real_timer mesh_timer;
+  mesh_timer.start();
+  double size = 0;
+  const C3T3 c3t3 = mesh_with_about(domain, std::abs(PMP::volume(surface)), o.vertices, o.seed, size, o.verbose);
+  mesh_timer.stop();
+
+  CGAL::Real_timer timer;
+  timer.start();
+  const FF::Generated_cross_field_3<K> g = FF::generate_cross_field_3(
+      c3t3, CGAL::parameters::number_of_iterations(o.iterations).verbose(o.verbose));
+  timer.stop();
+  const FF::Boundary_alignment_statistics a = FF::boundary_alignment_statistics(g);
+
+  if(!o.vtu.empty()) {
+    std::ofstream os(o.vtu);
+    if(!os) throw std::runtime_error("cannot write '" + o.vtu + "'");
+    FF::IO::write_VTU(os, g.field);
+  }
+  if(!o.frames.empty()) {
+    std::ofstream os(o.frames);
+    if(!os) throw std::runtime_error("cannot write '" + o.frames + "'");
+    FF::IO::write_frame_field(os, g.field);
+  }
+  if(!o.singular.empty()) {
+    std::ofstream os(o.singular);
+    if(!os) throw std::runtime_error("cannot write '" + o.singular + "'");
+    FF::IO::write_edges_VTU(os, g.field.points(), g.singular_edges);
+  }
+  total.stop();
+
+  std::ostringstream js;
+  js.precision(6);
+  js << "{\"model\": \"" << stem(o.input) << "\", \"n_vertices\": " << g.field.points().size()
+     << ", \"n_tets\": " << g.field.cells().size() << ", \"n_boundary_facets\": " << g.boundary_facets.size()
+     << ", \"n_feature_edges\": " << g.feature_edges.size() << ", \"n_edges\": " << g.number_of_edges
+     << ", \"n_interior_edges\": " << g.number_of_interior_edges
+     << ", \"n_singular_edges\": " << g.singular_edges.size()
+     << ", \"singular_edge_ratio\": "
+     << (g.number_of_interior_edges ? double(g.singular_edges.size()) / double(g.number_of_interior_edges) : 0.)
+     << ", \"boundary_alignment_error_mean_deg\": " << a.mean
+     << ", \"boundary_alignment_error_p95_deg\": " << a.p95
+     << ", \"boundary_alignment_error_max_deg\": " << a.max
+     << ", \"smoothness_energy\": " << g.smoothness_energy
+     << ", \"smoothness_energy_per_edge\": " << g.smoothness_energy / double(g.number_of_edges)
+     << ", \"features_angle\": " << o.features_angle << ", \"iterations\": " << o.iterations
+     << ", \"mesh_size\": " << size << ", \"mesh_time_s\": " << mesh_timer.time()
+     << ", \"time_s\": " << timer.time() << ", \"total_time_s\": " << total.time() << "}\n";
+  std::cout << js.str();
+  if(!o.json.empty()) {
+    std::ofstream os(o.json);
+    os << js.str();
+    if(!os) throw std::runtime_error("cannot write '" + o.json + "'");
+  }
+  return 0;
+}
+
+int main(int argc, char** argv)
+{
+  try {
+    return run(parse(argc, argv));
+  } catch(const Usage_error& e) {
+    std::cerr << "generate_frame_field: error: " << e.what() << "\n" << usage;
+    return 2;
+  } catch(const std::invalid_argument& e) { // the library refused the mesh
+    std::cerr << "generate_frame_field: error: " << e.what() << "\n";
+    return 2;
+  } catch(const std::exception& e) {
+    std::cerr << "generate_frame_field: error: " << e.what() << "\n";
+    return 1;
+  }
+}
