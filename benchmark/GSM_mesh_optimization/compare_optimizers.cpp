@@ -33,7 +33,7 @@ namespace {
 const char* usage =
     "usage: compare_optimizers INPUT [--vertices N] [--features-angle DEG] [--chains c1,c2,...]\n"
     "                          [--repeat N] [--threads N] [--json FILE] [--out-dir DIR] [--seed N]\n"
-    "                          [--verbose]\n"
+    "                          [--field NAME] [--verbose]\n"
     "  INPUT  a closed triangle surface (OFF, OBJ, PLY, STL, ...) or one of sphere, cube, torus\n"
     "  --vertices N        target vertex count of the initial mesh, within 10% (default 10000)\n"
     "  --features-angle D  protect sharp edges whose dihedral angle deviates by more than D\n"
@@ -47,6 +47,11 @@ const char* usage =
     "  --json FILE         write one JSON line per chain\n"
     "  --out-dir DIR       write <model>_<chain>.mesh, .vtu and a dihedral histogram .svg\n"
     "  --seed N            random seed of the mesher and the optimizers (default 0)\n"
+    "  --field NAME        the dissertation's adaptive / anisotropic cases (section 3.4.4):\n"
+    "                      adaptive-sphere (Fig. 3.7, INPUT sphere), anisotropic-sphere (Fig. 3.8,\n"
+    "                      INPUT sphere), anisotropic-cube (Fig. 3.9, INPUT cube): the initial mesh\n"
+    "                      follows the field's density, gsm gets the field, and quality is\n"
+    "                      measured in the metric\n"
     "  --verbose           progress of the optimizers that report it (gsm)\n";
 
 template <class T>
@@ -92,6 +97,8 @@ Options parse_command_line(int argc, char** argv)
       o.out_dir = value();
     } else if(arg == "--seed") {
       o.seed = parse_number<unsigned int>(arg, value());
+    } else if(arg == "--field") {
+      o.field = value();
     } else if(arg == "--verbose") {
       o.verbose = true;
     } else if(arg == "--help" || arg == "-h") {
@@ -107,6 +114,13 @@ Options parse_command_line(int argc, char** argv)
   }
   if(o.input.empty()) throw Input_error("no INPUT given");
   if(o.chains.empty()) o.chains = default_chains();
+  const std::string field_domain = o.field == "anisotropic-cube" ? "cube" : "sphere";
+  if(!o.field.empty() && o.field != "adaptive-sphere" && o.field != "anisotropic-sphere" &&
+     o.field != "anisotropic-cube")
+    throw Input_error("unknown --field '" + o.field +
+                      "' (known: adaptive-sphere, anisotropic-sphere, anisotropic-cube)");
+  if(!o.field.empty() && o.input != field_domain)
+    throw Input_error("--field " + o.field + " is defined on INPUT " + field_domain);
   return o;
 }
 

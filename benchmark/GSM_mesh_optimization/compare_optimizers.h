@@ -26,6 +26,7 @@ struct Options
   std::string out_dir;                 // --out-dir
   unsigned int seed = 0;               // --seed
   bool verbose = false;                // --verbose
+  std::string field;                   // --field: adaptive-sphere, anisotropic-sphere, anisotropic-cube
 };
 
 // A user error (bad command line, unreadable or invalid input): printed and exit code 2.

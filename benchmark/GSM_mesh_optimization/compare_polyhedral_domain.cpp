@@ -10,16 +10,14 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Mesh_complex_3_in_triangulation_3.h>
 #include <CGAL/Mesh_triangulation_3.h>
+#include <CGAL/GSM_mesh_optimization/IO/read_closed_surface.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
-#include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
-#include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
 #include <CGAL/Polyhedral_mesh_domain_with_features_3.h>
 #include <CGAL/Surface_mesh.h>
-#include <CGAL/boost/graph/helpers.h>
 
 #include <cmath>
-#include <fstream>
+#include <stdexcept>
 
 namespace vvm_benchmark {
 namespace {
@@ -46,31 +44,14 @@ Surface_mesh make_cube()
   return sm;
 }
 
-std::string stem(const std::string& path)
+// a closed, non self-intersecting surface enclosing a volume; anything else is an Input_error
+double read_closed_surface(const std::string& path, Surface_mesh& sm)
 {
-  std::string name = path.substr(path.find_last_of("/\\") + 1);
-  return name.substr(0, name.find_last_of('.'));
-}
-
-// Reads a closed, non self-intersecting surface; anything else is an Input_error.
-Surface_mesh read_closed_surface(const std::string& path)
-{
-  std::ifstream probe(path, std::ios::binary | std::ios::ate);
-  if(!probe) throw Input_error("cannot open '" + path + "'");
-  if(probe.tellg() <= 0) throw Input_error("'" + path + "' is an empty file");
-  Surface_mesh sm;
-  if(!CGAL::IO::read_polygon_mesh(path, sm))
-    throw Input_error("cannot read '" + path + "' as a polygon mesh (OFF, OBJ, PLY, STL, ...)");
-  if(sm.number_of_faces() == 0) throw Input_error("'" + path + "' contains no faces");
-  for(auto v : sm.vertices()) {
-    const K::Point_3& p = sm.point(v);
-    if(!std::isfinite(p.x()) || !std::isfinite(p.y()) || !std::isfinite(p.z()))
-      throw Input_error("'" + path + "' has a vertex with a non-finite coordinate");
+  try {
+    return GSM::IO::read_closed_surface(path, sm);
+  } catch(const std::invalid_argument& e) {
+    throw Input_error(e.what());
   }
-  if(!CGAL::is_triangle_mesh(sm)) PMP::triangulate_faces(sm);
-  if(!CGAL::is_closed(sm)) throw Input_error("the surface in '" + path + "' is open (it has border edges); a closed surface is needed");
-  if(PMP::does_self_intersect(sm)) throw Input_error("the surface in '" + path + "' self-intersects");
-  return sm;
 }
 
 } // namespace
@@ -78,13 +59,13 @@ Surface_mesh read_closed_surface(const std::string& path)
 int run_polyhedral_domain(const Options& options)
 {
   const bool is_cube = options.input == "cube";
-  const Surface_mesh surface = is_cube ? make_cube() : read_closed_surface(options.input);
+  Surface_mesh surface = is_cube ? make_cube() : Surface_mesh();
+  const double volume = is_cube ? std::abs(PMP::volume(surface)) : read_closed_surface(options.input, surface);
   Domain domain(surface);
   const double angle = options.features_angle >= 0 ? options.features_angle : (is_cube ? 60. : 0.);
   if(angle > 0) domain.detect_features(angle);
-  const double volume = std::abs(PMP::volume(surface));
-  if(!(volume > 0)) throw Input_error("the surface in '" + options.input + "' encloses no volume");
-  Comparison_driver<C3T3, Domain> driver(options, is_cube ? "cube" : stem(options.input), domain, volume);
+  Comparison_driver<C3T3, Domain> driver(options, is_cube ? "cube" : GSM::IO::file_stem(options.input), domain,
+                                         volume);
   return driver.run();
 }
 

@@ -11,7 +11,9 @@
 #include "dihedral_histogram_svg.h"
 
 #include <CGAL/GSM_mesh_optimization/IO/write_VTU_with_quality.h>
+#include <CGAL/GSM_mesh_optimization/dissertation_metric_fields.h>
 #include <CGAL/GSM_mesh_optimization/mesh_quality_statistics.h>
+#include <CGAL/GSM_mesh_optimization/mesh_with_vertex_count.h>
 
 // make_mesh_3.h first: with CGAL_LINKED_WITH_TBB, CGAL 5.5.1's optimizer headers
 // rely on TBB headers that only the mesher includes.
@@ -27,9 +29,12 @@
 #include <CGAL/odt_optimize_mesh_3.h>
 #include <CGAL/perturb_mesh_3.h>
 
+#include <Eigen/Eigenvalues>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <fstream>
 #include <iostream>
 #include <sstream>
@@ -70,6 +75,54 @@ inline std::vector<std::string> chain_steps(const std::string& chain)
   return steps;
 }
 
+// The target of --field: a sizing field or a metric (dissertation 3.4.4), or
+// nothing (uniform isotropic meshing).
+struct Target_field
+{
+  std::string name;
+  std::function<double(const Eigen::Vector3d&)> sizing;
+  std::function<Eigen::Matrix3d(const Eigen::Vector3d&)> metric;
+
+  explicit Target_field(const std::string& field_name) : name(field_name)
+  {
+    namespace D = GSM::dissertation;
+    if(name == "adaptive-sphere")
+      sizing = D::adaptive_sphere_sizing;
+    else if(name == "anisotropic-sphere")
+      metric = D::anisotropic_sphere_metric;
+    else if(name == "anisotropic-cube")
+      metric = [](const Eigen::Vector3d& x) { return D::anisotropic_cube_metric(x); };
+  }
+
+  // isotropic edge length of the same density, for make_mesh_3
+  double isotropic_size(const Eigen::Vector3d& x) const
+  {
+    if(sizing) return sizing(x);
+    if(metric) return std::pow(metric(x).determinant(), -1. / 6.);
+    return 1.;
+  }
+
+  // the map to the space where the target tetrahedron is regular: quality is measured there
+  Eigen::Matrix3d B(const Eigen::Vector3d& x) const
+  {
+    if(sizing) return Eigen::Matrix3d::Identity() / sizing(x);
+    if(metric) return Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(metric(x)).operatorSqrt();
+    return Eigen::Matrix3d::Identity();
+  }
+};
+
+// make_mesh_3's sizing field for the cell, facet and edge size criteria
+struct Scaled_isotropic_size
+{
+  double scale;
+  const Target_field* field;
+  template <class Point_3, class Index>
+  double operator()(const Point_3& p, int, const Index&) const
+  {
+    return scale * field->isotropic_size(Eigen::Vector3d(p.x(), p.y(), p.z()));
+  }
+};
+
 struct Chain_result
 {
   std::string chain;
@@ -87,8 +140,11 @@ class Comparison_driver
 public:
   Comparison_driver(const Options& options, const std::string& model, const MeshDomain& domain,
                     double domain_volume)
-    : options_(options), model_(model), domain_(domain), domain_volume_(domain_volume)
-  {}
+    : options_(options), model_(model), domain_(domain), domain_volume_(domain_volume),
+      field_(options.field)
+  {
+    if(!field_.name.empty()) model_ += "_" + field_.name;
+  }
 
   int run()
   {
@@ -106,49 +162,59 @@ public:
 private:
   // Uniform sizing: edge, facet and cell sizes all equal to s, searched so that
   // the number of vertices is within 10% of the target.
+  // With --field, the sizes are s times the field's isotropic size (its density).
   C3T3 mesh_with_size(double s) const
   {
     namespace params = CGAL::parameters;
-    Mesh_criteria criteria(params::edge_size = s, params::facet_angle = 25, params::facet_size = s,
-                           params::facet_distance = s / 10., params::cell_radius_edge_ratio = 3,
-                           params::cell_size = s);
     CGAL::get_default_random() = CGAL::Random(options_.seed);
+    if(field_.name.empty()) {
+      Mesh_criteria criteria(params::edge_size = s, params::facet_angle = 25, params::facet_size = s,
+                             params::facet_distance = s / 10., params::cell_radius_edge_ratio = 3,
+                             params::cell_size = s);
+      return CGAL::make_mesh_3<C3T3>(domain_, criteria, params::no_perturb(), params::no_exude());
+    }
+    const Scaled_isotropic_size size{s, &field_};
+    // the fields' isotropic sizes on the boundary are 0.1 s or more
+    Mesh_criteria criteria(params::edge_size = size, params::facet_angle = 25, params::facet_size = size,
+                           params::facet_distance = 0.01 * s, params::cell_radius_edge_ratio = 3,
+                           params::cell_size = size);
     return CGAL::make_mesh_3<C3T3>(domain_, criteria, params::no_perturb(), params::no_exude());
+  }
+
+  GSM::Mesh_quality_statistics quality(const C3T3& c3t3) const
+  {
+    if(field_.name.empty()) return GSM::mesh_quality_statistics(c3t3);
+    return GSM::mesh_quality_statistics(c3t3, [this](const auto& p) {
+      return field_.B(Eigen::Vector3d(p.x(), p.y(), p.z()));
+    });
+  }
+
+  template <class NamedParameters>
+  CGAL::Mesh_optimization_return_code run_gsm(C3T3& c3t3, const NamedParameters& np) const
+  {
+    if(field_.sizing)
+      return CGAL::gsm_optimize_mesh_3(c3t3, domain_, GSM::parameters::sizing_field(field_.sizing, np));
+    if(field_.metric)
+      return CGAL::gsm_optimize_mesh_3(c3t3, domain_, GSM::parameters::metric_field(field_.metric, np));
+    return CGAL::gsm_optimize_mesh_3(c3t3, domain_, np);
   }
 
   void make_initial_mesh()
   {
-    const double target = double(options_.target_vertices);
-    double s = std::cbrt(domain_volume_ / (0.2 * target)); // first guess, corrected below
-    double prev_s = 0, prev_n = 0, best_error = 1e300;
-    for(int attempt = 0; attempt < 8; ++attempt) {
-      CGAL::Real_timer timer;
-      timer.start();
-      C3T3 c3t3 = mesh_with_size(s);
-      timer.stop();
-      const double n = double(GSM::mesh_quality_statistics(c3t3).number_of_vertices);
-      std::cerr << "  make_mesh_3 size " << s << ": " << n << " vertices (" << timer.time()
-                << " s)\n";
-      if(n == 0)
-        throw Input_error("make_mesh_3 produced an empty mesh for '" + model_ + "'");
-      const double error = std::abs(n - target) / target;
-      if(error < best_error) {
-        best_error = error;
-        initial_ = std::move(c3t3);
-        edge_size_ = s;
-        mesh_time_s_ = timer.time();
-      }
-      if(error <= 0.05) break;
-      // n ~ s^-alpha; alpha from the last two meshes (between surface- and volume-dominated)
-      double alpha = 3;
-      if(prev_n > 0 && prev_s != s && prev_n != n)
-        alpha = std::clamp(-std::log(n / prev_n) / std::log(s / prev_s), 1.5, 3.5);
-      prev_s = s;
-      prev_n = n;
-      s *= std::pow(n / target, 1. / alpha);
+    const double first_size = std::cbrt(domain_volume_ / (0.2 * double(options_.target_vertices))) // corrected below
+                              / field_.isotropic_size(Eigen::Vector3d::Zero());
+    GSM::Mesh_with_vertex_count_result<C3T3> r;
+    try {
+      r = GSM::mesh_with_vertex_count([this](double s) { return mesh_with_size(s); }, options_.target_vertices,
+                                      first_size, 0.05, CGAL::parameters::verbose(true));
+    } catch(const std::invalid_argument&) { // a mesh with no vertex
+      throw Input_error("make_mesh_3 produced an empty mesh for '" + model_ + "'");
     }
-    if(best_error > 0.1)
-      std::cerr << "warning: the initial mesh is " << 100 * best_error
+    initial_ = std::move(r.c3t3);
+    edge_size_ = r.size;
+    mesh_time_s_ = r.time_s;
+    if(r.relative_error > 0.1)
+      std::cerr << "warning: the initial mesh is " << 100 * r.relative_error
                 << "% away from the requested number of vertices\n";
   }
 
@@ -173,9 +239,8 @@ private:
         else if(step == "odt")
           code = CGAL::odt_optimize_mesh_3(c3t3, domain_);
         else if(step == "gsm" || step == "gsm-esm")
-          code = CGAL::gsm_optimize_mesh_3(
-              c3t3, domain_,
-              GSM::parameters::energy(step == "gsm" ? GSM::Shape_matching_energy::GSM
+          code = run_gsm(
+              c3t3, GSM::parameters::energy(step == "gsm" ? GSM::Shape_matching_energy::GSM
                                                     : GSM::Shape_matching_energy::ESM,
                                       CGAL::parameters::verbose(options_.verbose)));
         else if(step == "perturb")
@@ -191,7 +256,7 @@ private:
     std::sort(times.begin(), times.end());
     result.opt_time_s = times.size() % 2 ? times[times.size() / 2]
                                          : 0.5 * (times[times.size() / 2 - 1] + times[times.size() / 2]);
-    result.quality = GSM::mesh_quality_statistics(c3t3);
+    result.quality = quality(c3t3);
     if(!options_.out_dir.empty()) write_outputs(c3t3, result);
     return result;
   }
@@ -227,7 +292,7 @@ private:
       os << ", \"n_min_dih_lt" << int(q.dihedral_thresholds[i]) << "\": " << q.n_min_dihedral_below[i];
     os << ", \"gamma_min\": " << q.min_radius_ratio << ", \"gamma_mean\": " << q.mean_radius_ratio
        << ", \"n_inverted\": " << q.number_of_inverted_cells << ", \"opt_time_s\": " << r.opt_time_s
-       << ", \"repeat\": " << (std::max)(1, options_.repeat) << ", \"threads\": " << options_.threads
+       << ", \"field\": \"" << field_.name << "\", \"repeat\": " << (std::max)(1, options_.repeat) << ", \"threads\": " << options_.threads
        << ", \"edge_size\": " << edge_size_ << ", \"mesh_time_s\": " << mesh_time_s_
        << ", \"return_codes\": \"" << r.return_codes << "\"}\n";
     if(!os) throw std::runtime_error("cannot write '" + options_.json_file + "'");
@@ -238,9 +303,12 @@ private:
     double perturb_exude_time = 0;
     for(const Chain_result& r : results)
       if(r.chain == "perturb+exude") perturb_exude_time = r.opt_time_s;
-    std::printf("\nmodel %s: initial make_mesh_3 mesh, uniform size %.4g, %.2f s; "
+    std::printf("\nmodel %s: initial make_mesh_3 mesh, %s size %.4g, %.2f s; "
                 "optimizer times are medians of %d run(s)\n",
-                model_.c_str(), edge_size_, mesh_time_s_, (std::max)(1, options_.repeat));
+                model_.c_str(), field_.name.empty() ? "uniform" : "field-scaled", edge_size_,
+                mesh_time_s_, (std::max)(1, options_.repeat));
+    if(!field_.name.empty())
+      std::printf("quality measured in the metric of %s (each tet mapped by M^1/2)\n", field_.name.c_str());
     std::printf("%-22s %7s %7s %7s %7s %7s %6s %6s %6s %6s %6s %6s %4s %9s %7s\n", "chain", "verts",
                 "tets", "th_min", "th_max", "mean_mn", "<10", "<20", "<30", "<40", "g_min",
                 "g_mean", "inv", "opt_s", "/p+e");
@@ -263,6 +331,7 @@ private:
   std::string model_;
   const MeshDomain& domain_;
   double domain_volume_;
+  Target_field field_;
   C3T3 initial_;
   double edge_size_ = 0;
   double mesh_time_s_ = 0;

@@ -18,25 +18,23 @@
 #include <CGAL/Frame_fields/boundary_alignment.h>
 #include <CGAL/Frame_fields/generate_cross_field_3.h>
 
+#include <CGAL/GSM_mesh_optimization/IO/read_closed_surface.h>
+#include <CGAL/GSM_mesh_optimization/mesh_with_vertex_count.h>
+
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Mesh_complex_3_in_triangulation_3.h>
 #include <CGAL/Mesh_criteria_3.h>
 #include <CGAL/Mesh_triangulation_3.h>
-#include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
-#include <CGAL/Polygon_mesh_processing/measure.h>
-#include <CGAL/Polygon_mesh_processing/self_intersections.h>
-#include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 #include <CGAL/Polyhedral_mesh_domain_with_features_3.h>
 #include <CGAL/Random.h>
 #include <CGAL/Real_timer.h>
 #include <CGAL/Surface_mesh.h>
-#include <CGAL/boost/graph/helpers.h>
 
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <iostream>
-#include <set>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -47,7 +45,7 @@ typedef CGAL::Polyhedral_mesh_domain_with_features_3<K, Surface_mesh> Domain;
 typedef CGAL::Mesh_triangulation_3<Domain, CGAL::Default, CGAL::Sequential_tag>::type Tr;
 typedef CGAL::Mesh_complex_3_in_triangulation_3<Tr, Domain::Corner_index, Domain::Curve_index> C3T3;
 typedef CGAL::Mesh_criteria_3<Tr> Mesh_criteria;
-namespace PMP = CGAL::Polygon_mesh_processing;
+namespace GSM = CGAL::GSM_mesh_optimization;
 namespace FF = CGAL::Frame_fields;
 
 // bad input or options: exit code 2
@@ -131,33 +129,6 @@ Options parse(int argc, char** argv)
   return o;
 }
 
-// a closed, non self-intersecting triangle surface enclosing a volume, or a Usage_error
-Surface_mesh read_closed_surface(const std::string& path)
-{
-  std::ifstream probe(path, std::ios::binary | std::ios::ate);
-  if(!probe) throw Usage_error("cannot open '" + path + "'");
-  if(probe.tellg() <= 0) throw Usage_error("'" + path + "' is empty");
-  Surface_mesh sm;
-  if(!CGAL::IO::read_polygon_mesh(path, sm) || sm.number_of_faces() == 0)
-    throw Usage_error("'" + path + "' is not a readable polygon mesh with faces");
-  for(auto v : sm.vertices())
-    if(!std::isfinite(sm.point(v).x()) || !std::isfinite(sm.point(v).y()) || !std::isfinite(sm.point(v).z()))
-      throw Usage_error("'" + path + "' has a non-finite coordinate");
-  if(!CGAL::is_triangle_mesh(sm)) PMP::triangulate_faces(sm);
-  if(!CGAL::is_closed(sm)) throw Usage_error("the surface in '" + path + "' is open (it has border edges)");
-  if(PMP::does_self_intersect(sm)) throw Usage_error("the surface in '" + path + "' self-intersects");
-  if(!(std::abs(PMP::volume(sm)) > 0)) throw Usage_error("the surface in '" + path + "' encloses no volume");
-  return sm;
-}
-
-std::size_t vertices_in_cells(const C3T3& c3t3)
-{
-  std::set<Tr::Vertex_handle> vertices;
-  for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c)
-    for(int i = 0; i < 4; ++i) vertices.insert(c->vertex(i));
-  return vertices.size();
-}
-
 // make_mesh_3 with uniform size s (no optimizers: the field does not need them)
 C3T3 mesh_with_size(const Domain& domain, double s, unsigned seed)
 {
@@ -169,47 +140,50 @@ C3T3 mesh_with_size(const Domain& domain, double s, unsigned seed)
   return CGAL::make_mesh_3<C3T3>(domain, criteria, params::no_perturb(), params::no_exude());
 }
 
-// the mesh whose vertex count is nearest to `target` among a few sizes, each
-// guessed from the last two by a power law n ~ s^-k
-C3T3 mesh_with_about(const Domain& domain, double volume, long target, unsigned seed, double& size, bool verbose)
+// `s` as a JSON string: quotes, backslashes and control characters escaped
+std::string json_string(const std::string& s)
 {
-  double s = std::cbrt(6 * volume / double(target)); // ~6 tets of volume s^3/6 per vertex
-  double s_prev = 0, n_prev = 0, best_gap = 1e300;
-  C3T3 best;
-  for(int attempt = 0; attempt < 8; ++attempt) {
-    C3T3 c3t3 = mesh_with_size(domain, s, seed);
-    const double n = double(vertices_in_cells(c3t3));
-    if(verbose) std::cerr << "  make_mesh_3 size " << s << ": " << n << " vertices\n";
-    if(n == 0) throw Usage_error("make_mesh_3 produced no cell");
-    const double gap = std::abs(std::log(n / double(target)));
-    if(gap < best_gap) best_gap = gap, best = std::move(c3t3), size = s;
-    if(gap < std::log(1.05)) break;
-    double k = 3;
-    if(n_prev > 0 && n != n_prev) k = std::min(3.5, std::max(1.5, -std::log(n / n_prev) / std::log(s / s_prev)));
-    s_prev = s, n_prev = n;
-    s *= std::pow(n / double(target), 1 / k);
+  std::string out = "\"";
+  for(const char ch : s) {
+    const unsigned char c = static_cast<unsigned char>(ch);
+    if(c == '"' || c == '\\') out += '\\', out += ch;
+    else if(c < 0x20) {
+      char buf[8];
+      std::snprintf(buf, sizeof buf, "\\u%04x", unsigned(c));
+      out += buf;
+    } else out += ch;
   }
-  return best;
+  return out + "\"";
 }
 
-std::string stem(const std::string& path)
+// a JSON number, or null if it is not finite (JSON has no NaN or infinity)
+struct Json_number
 {
-  const std::string name = path.substr(path.find_last_of("/\\") + 1);
-  return name.substr(0, name.find_last_of('.'));
-}
+  double x;
+  friend std::ostream& operator<<(std::ostream& os, const Json_number& n)
+  {
+    if(std::isfinite(n.x)) return os << n.x;
+    return os << "null";
+  }
+};
 
 int run(const Options& o)
 {
   CGAL::Real_timer total;
   total.start();
-  const Surface_mesh surface = read_closed_surface(o.input);
+  Surface_mesh surface;
+  const double volume = GSM::IO::read_closed_surface(o.input, surface);
   Domain domain(surface);
   if(o.features_angle > 0) domain.detect_features(o.features_angle);
 
   CGAL::Real_timer mesh_timer;
   mesh_timer.start();
-  double size = 0;
-  const C3T3 c3t3 = mesh_with_about(domain, std::abs(PMP::volume(surface)), o.vertices, o.seed, size, o.verbose);
+  // about 6 tets of volume s^3/6 per vertex
+  GSM::Mesh_with_vertex_count_result<C3T3> meshed = GSM::mesh_with_vertex_count(
+      [&](double s) { return mesh_with_size(domain, s, o.seed); }, std::size_t(o.vertices),
+      std::cbrt(6 * volume / double(o.vertices)), 0.05, CGAL::parameters::verbose(o.verbose));
+  const C3T3& c3t3 = meshed.c3t3;
+  const double size = meshed.size;
   mesh_timer.stop();
 
   CGAL::Real_timer timer;
@@ -238,21 +212,23 @@ int run(const Options& o)
 
   std::ostringstream js;
   js.precision(6);
-  js << "{\"model\": \"" << stem(o.input) << "\", \"n_vertices\": " << g.field.points().size()
+  typedef Json_number N;
+  js << "{\"model\": " << json_string(GSM::IO::file_stem(o.input)) << ", \"n_vertices\": " << g.field.points().size()
      << ", \"n_tets\": " << g.field.cells().size() << ", \"n_boundary_facets\": " << g.boundary_facets.size()
      << ", \"n_feature_edges\": " << g.feature_edges.size() << ", \"n_edges\": " << g.number_of_edges
      << ", \"n_interior_edges\": " << g.number_of_interior_edges
      << ", \"n_singular_edges\": " << g.singular_edges.size()
      << ", \"singular_edge_ratio\": "
-     << (g.number_of_interior_edges ? double(g.singular_edges.size()) / double(g.number_of_interior_edges) : 0.)
-     << ", \"boundary_alignment_error_mean_deg\": " << a.mean
-     << ", \"boundary_alignment_error_p95_deg\": " << a.p95
-     << ", \"boundary_alignment_error_max_deg\": " << a.max
-     << ", \"smoothness_energy\": " << g.smoothness_energy
-     << ", \"smoothness_energy_per_edge\": " << g.smoothness_energy / double(g.number_of_edges)
-     << ", \"features_angle\": " << o.features_angle << ", \"iterations\": " << o.iterations
-     << ", \"mesh_size\": " << size << ", \"mesh_time_s\": " << mesh_timer.time()
-     << ", \"time_s\": " << timer.time() << ", \"total_time_s\": " << total.time() << "}\n";
+     << N{g.number_of_interior_edges ? double(g.singular_edges.size()) / double(g.number_of_interior_edges) : 0.}
+     << ", \"boundary_alignment_error_mean_deg\": " << N{a.mean}
+     << ", \"boundary_alignment_error_p95_deg\": " << N{a.p95}
+     << ", \"boundary_alignment_error_max_deg\": " << N{a.max}
+     << ", \"smoothness_energy\": " << N{g.smoothness_energy}
+     << ", \"smoothness_energy_per_edge\": " << N{g.smoothness_energy / double(g.number_of_edges)}
+     << ", \"solver_iterations\": " << g.solver_iterations << ", \"solver_error\": " << N{g.solver_error}
+     << ", \"features_angle\": " << N{o.features_angle} << ", \"iterations\": " << o.iterations
+     << ", \"mesh_size\": " << N{size} << ", \"mesh_time_s\": " << N{mesh_timer.time()}
+     << ", \"time_s\": " << N{timer.time()} << ", \"total_time_s\": " << N{total.time()} << "}\n";
   std::cout << js.str();
   if(!o.json.empty()) {
     std::ofstream os(o.json);

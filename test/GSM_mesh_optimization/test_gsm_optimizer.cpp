@@ -14,6 +14,7 @@
 
 #include "test_utilities.h"
 
+#include <CGAL/Delaunay_triangulation_3.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Labeled_mesh_domain_3.h>
 #include <CGAL/Mesh_complex_3_in_triangulation_3.h>
@@ -24,17 +25,29 @@
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/make_mesh_3.h>
 
+#include <CGAL/Polygon_mesh_processing/bbox.h>
+#include <CGAL/Polygon_mesh_processing/distance.h>
+#include <CGAL/Polygon_mesh_processing/measure.h>
+#include <CGAL/facets_in_complex_3_to_triangle_mesh.h>
+
 #include <CGAL/GSM_mesh_optimization/internal/Energy_guided_flips.h>
+#include <CGAL/GSM_mesh_optimization/dissertation_metric_fields.h>
 #include <CGAL/GSM_mesh_optimization/mesh_quality_statistics.h>
 #include <CGAL/GSM_mesh_optimization/shape_matching_energy.h>
 #include <CGAL/gsm_optimize_mesh_3.h>
 
 #include <Eigen/Geometry>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdio>
 #include <functional>
+#include <limits>
 #include <map>
 #include <random>
+#include <set>
+#include <string>
 #include <vector>
 
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
@@ -302,6 +315,216 @@ void test_boundary_peel()
 }
 
 // ---------------------------------------------------------------------------
+// edge removal and multi-face removal (Shewchuk 2002)
+
+void test_polygon_triangulation()
+{
+  const double inf = std::numeric_limits<double>::infinity();
+  for(int m = 3; m <= 8; ++m) {
+    // triangles on vertex 0 are cheap: the fan from 0 is best
+    const GSM::internal::Polygon_triangulation fan = GSM::internal::best_polygon_triangulation(
+        m, [](int i, int, int) { return i == 0 ? 1. : 10.; });
+    VVM_CHECK_EQUAL(fan.triangles.size(), std::size_t(m - 2));
+    VVM_CHECK_CLOSE(fan.cost, double(m - 2), 1e-12);
+    // every triangle on vertex 0 forbidden: none
+    const GSM::internal::Polygon_triangulation none = GSM::internal::best_polygon_triangulation(
+        m, [&](int i, int, int) { return i == 0 ? inf : 1.; });
+    VVM_CHECK(none.triangles.empty() && none.cost == inf);
+    // ear order: each triangle has two edges on the polygon left by those before
+    std::vector<bool> gone(m, false);
+    bool ears = true;
+    for(const auto& t : fan.triangles) {
+      ears = ears && !gone[t[0]] && !gone[t[2]];
+      for(int v = t[0] + 1; v < t[2]; ++v) ears = ears && (v == t[1] ? !gone[v] : gone[v]);
+      gone[t[1]] = true;
+    }
+    VVM_CHECK(ears);
+  }
+}
+
+// exact bookkeeping, every finite cell in subdomain 1, the hull facets in patch (1, 0)
+void check_after_replacement(Flip_fixture& f, std::size_t cells, std::size_t hull_facets)
+{
+  const Implicit_tr& tr = f.c3t3.triangulation();
+  VVM_CHECK_EQUAL(f.c3t3.number_of_cells_in_complex(), cells);
+  VVM_CHECK_EQUAL(tr.number_of_finite_cells(), cells);
+  VVM_CHECK_EQUAL(f.count, cells);
+  VVM_CHECK(complex_is_valid(f.c3t3));
+  VVM_CHECK_EQUAL(f.c3t3.number_of_facets_in_complex(), hull_facets);
+  bool labels = true;
+  for(auto c : tr.finite_cell_handles()) labels = labels && f.c3t3.subdomain_index(c) == 1;
+  for(auto fit = f.c3t3.facets_in_complex_begin(); fit != f.c3t3.facets_in_complex_end(); ++fit)
+    labels = labels && tr.is_infinite(fit->first->neighbor(fit->second)) == !tr.is_infinite(fit->first) &&
+             fit->first->surface_patch_index(fit->second) == std::make_pair(1, 0);
+  VVM_CHECK(labels);
+  VVM_CHECK_CLOSE(f.sum, f.energy.total().first, 1e-9 * f.sum);
+}
+
+// moves v (keeping the connectivity)
+void move(const Vertex_handle& v, double x, double y, double z)
+{
+  v->set_point(Implicit_tr::Point(Bare_point(x, y, z)));
+}
+
+// the ring r_k at angles: r_0, r_1 at -+`half_wedge` degrees, the others evenly
+// spaced round the rest of the unit circle in z = 0
+void place_ring(const std::vector<Vertex_handle>& r, double half_wedge)
+{
+  const int m = int(r.size());
+  for(int k = 0; k < m; ++k) {
+    const double t = (k == 0 ? -half_wedge : half_wedge + (360 - 2 * half_wedge) * (k - 1) / (m - 1)) * CGAL_PI / 180;
+    move(r[k], std::cos(t), std::sin(t), 0);
+  }
+}
+
+// the edge (a, b) = (0, 0, +-0.5) through the regular m-gon of radius 1 in z = 0:
+// the m cells around it (Delaunay), then a and b moved to +-z and, for a sliver,
+// the ring moved so that the cell (a, b, r_0, r_1) has a dihedral angle of 176
+// degrees at (a, b): GSM prefers the edge removed (z = 1: mean energy 84 against
+// 7 for m = 5, 71 against 13 for m = 6, 62 against 22 for m = 7); not for
+// the regular ring (m = 6, z = 0.5: 2.7 against 7.8)
+struct Ring_fixture : Flip_fixture
+{
+  Vertex_handle a, b;
+  std::vector<Vertex_handle> r;
+
+  Ring_fixture(int m, double z, bool sliver)
+  {
+    Implicit_tr& tr = c3t3.triangulation();
+    for(int k = 0; k < m; ++k) r.push_back(insert(tr, std::cos(2 * CGAL_PI * k / m), std::sin(2 * CGAL_PI * k / m), 0));
+    a = insert(tr, 0, 0, 0.5);
+    b = insert(tr, 0, 0, -0.5);
+    move(a, 0, 0, z);
+    move(b, 0, 0, -z);
+    if(sliver) place_ring(r, 88);
+    start();
+  }
+  bool edge(Implicit_tr::Edge& e)
+  {
+    return c3t3.triangulation().is_edge(a, b, e.first, e.second, e.third);
+  }
+};
+
+void test_edge_removal()
+{
+  for(int m = 5; m <= 7; ++m) {
+    Ring_fixture f(m, 1., true);
+    Implicit_tr::Edge e;
+    VVM_CHECK(f.edge(e));
+    VVM_CHECK_EQUAL(f.c3t3.number_of_cells_in_complex(), std::size_t(m));
+    const double before = f.sum, mean_before = f.sum / m;
+    // the fan from r_0 is one candidate: the chosen triangulation is no worse
+    double fan = 0;
+    for(int k = 1; k + 1 < m; ++k) {
+      const auto p = [&](const Vertex_handle& v) { return f.energy.position(v); };
+      fan += f.energy.tetrahedron(p(f.a), p(f.r[0]), p(f.r[k]), p(f.r[k + 1])) +
+             f.energy.tetrahedron(p(f.b), p(f.r[0]), p(f.r[k]), p(f.r[k + 1]));
+    }
+    auto flips = f.flips();
+    VVM_CHECK(flips.try_remove_edge(e));
+    VVM_CHECK(!f.edge(e));
+    check_after_replacement(f, std::size_t(2 * (m - 2)), std::size_t(2 * m));
+    VVM_CHECK(f.sum <= fan * (1 + 1e-12));
+    VVM_CHECK(f.sum / double(2 * (m - 2)) < mean_before);
+    VVM_CHECK(f.sum - before < (m - 4) * mean_before);
+  }
+
+  // refusals, the complex unchanged: a short edge (removal worse), a feature edge,
+  // a surface facet on the edge, a cell of another subdomain
+  for(int refusal = 0; refusal < 4; ++refusal) {
+    Ring_fixture f(6, refusal == 0 ? 0.5 : 1., refusal != 0);
+    Implicit_tr::Edge e;
+    VVM_CHECK(f.edge(e));
+    std::size_t facets = 12;
+    if(refusal == 1) f.c3t3.add_to_complex(f.a, f.b, 1);
+    if(refusal == 2) {
+      Implicit_tr::Cell_handle c;
+      int i, j, k;
+      VVM_CHECK(f.c3t3.triangulation().is_facet(f.a, f.b, f.r[2], c, i, j, k));
+      f.c3t3.add_to_complex(c, 6 - i - j - k, std::make_pair(1, 2));
+      ++facets;
+    }
+    if(refusal == 3) {
+      f.c3t3.remove_from_complex(e.first);
+      f.c3t3.add_to_complex(e.first, 2);
+    }
+    const double before = f.sum;
+    auto flips = f.flips();
+    VVM_CHECK(!flips.try_remove_edge(e));
+    VVM_CHECK(f.edge(e));
+    VVM_CHECK_EQUAL(f.c3t3.number_of_cells_in_complex(), std::size_t(6));
+    VVM_CHECK_EQUAL(f.c3t3.number_of_facets_in_complex(), facets);
+    VVM_CHECK(complex_is_valid(f.c3t3));
+    VVM_CHECK_EQUAL(f.sum, before);
+  }
+}
+
+void test_multi_face_removal()
+{
+  // the inverse: Delaunay on the pentagon with a and b far (no edge (a, b): three
+  // triangles between them), then a and b moved close to the pentagon, whose six
+  // flat cells are worse than five around a new edge (a, b) (mean energy 9.5 against
+  // 3.6); or the pentagon moved as in Ring_fixture for a sliver, and (a, b) at +-1.5:
+  // a new edge would make a sliver (mean energy 38 against 5)
+  for(int refusal = 0; refusal < 4; ++refusal) {
+    Flip_fixture f;
+    Implicit_tr& tr = f.c3t3.triangulation();
+    std::vector<Vertex_handle> r;
+    for(int k = 0; k < 5; ++k) r.push_back(insert(tr, std::cos(2 * CGAL_PI * k / 5) + 0.01 * k, std::sin(2 * CGAL_PI * k / 5), 0));
+    const Vertex_handle a = insert(tr, 0.02, 0.01, 1.5), b = insert(tr, -0.01, 0.02, -1.5);
+    const double z = refusal == 1 ? 1.5 : 0.35;
+    move(a, 0.02, 0.01, z);
+    move(b, -0.01, 0.02, -z);
+    if(refusal == 1) place_ring(r, 87);
+    f.start();
+    Implicit_tr::Cell_handle c;
+    int i, j;
+    VVM_CHECK(!tr.is_edge(a, b, c, i, j));
+    VVM_CHECK_EQUAL(f.c3t3.number_of_cells_in_complex(), std::size_t(6));
+    // the triangle of the pentagon that (a, b) crosses, and a diagonal of the pentagon
+    Implicit_tr::Facet start;
+    std::pair<Vertex_handle, Vertex_handle> diagonal;
+    for(auto fit : tr.finite_facets()) {
+      const Implicit_tr::Cell_handle fc = fit.first;
+      if(fc->vertex(fit.second) != a && fc->vertex(fit.second) != b) continue;
+      if(fc->neighbor(fit.second)->has_vertex(a) == fc->has_vertex(a)) continue; // not between a and b
+      std::array<Vertex_handle, 3> t;
+      for(int n = 0; n < 3; ++n) t[n] = fc->vertex((fit.second + n + 1) & 3);
+      for(int n = 0; n < 3; ++n) {
+        const int gap = std::abs(int(std::find(r.begin(), r.end(), t[n]) - std::find(r.begin(), r.end(), t[(n + 1) % 3])));
+        if(gap == 2 || gap == 3) diagonal = std::make_pair(t[n], t[(n + 1) % 3]);
+      }
+      const auto p = [&](const Vertex_handle& v) { return v->point().point(); };
+      if(CGAL::do_intersect(K::Segment_3(p(a), p(b)), K::Triangle_3(p(t[0]), p(t[1]), p(t[2])))) start = fit;
+    }
+    std::size_t facets = 10;
+    if(refusal == 2) {
+      f.c3t3.add_to_complex(start, std::make_pair(1, 2));
+      ++facets;
+    }
+    if(refusal == 3) f.c3t3.add_to_complex(diagonal.first, diagonal.second, 1);
+    const double before = f.sum, mean_before = f.sum / 6;
+    auto flips = f.flips();
+    const int removed = flips.try_remove_faces(start);
+    if(refusal == 0) {
+      VVM_CHECK_EQUAL(removed, 3);
+      VVM_CHECK(tr.is_edge(a, b, c, i, j));
+      check_after_replacement(f, 5, 10);
+      VVM_CHECK(f.sum / 5 < mean_before);
+      VVM_CHECK(f.sum - before < -mean_before);
+    } else {
+      // too good to change, a surface facet to remove, a feature edge to remove
+      VVM_CHECK(refusal == 3 ? removed < 3 : removed == 0);
+      VVM_CHECK(refusal == 3 || !tr.is_edge(a, b, c, i, j));
+      VVM_CHECK(tr.is_edge(diagonal.first, diagonal.second, c, i, j));
+      VVM_CHECK_EQUAL(f.c3t3.number_of_facets_in_complex(), facets);
+      VVM_CHECK(complex_is_valid(f.c3t3));
+      VVM_CHECK_CLOSE(f.sum, f.energy.total().first, 1e-9 * f.sum);
+    }
+  }
+}
+
+// ---------------------------------------------------------------------------
 // whole runs
 
 double sphere_function(const K::Point_3& p) { return p.x() * p.x() + p.y() * p.y() + p.z() * p.z() - 1.; }
@@ -406,6 +629,44 @@ void test_sphere_run()
   VVM_CHECK(complex_is_valid(adaptive));
 }
 
+// flip passes alone on a make_mesh_3 sphere: edge and multi-face removals happen,
+// the complex stays valid, the running sum exact
+void test_flip_pass_on_sphere()
+{
+  Implicit_c3t3 c3t3 = make_sphere_mesh(0.2);
+  GSM::internal::Metric_field metric = GSM::internal::Metric_field::uniform(GSM::internal::estimated_edge_length(c3t3));
+  GSM::internal::Mesh_energy<Implicit_c3t3> energy(c3t3, metric, GSM::Shape_matching_energy::GSM);
+  double sum;
+  std::size_t count;
+  std::tie(sum, count) = energy.total();
+  const double mean_before = sum / double(count);
+  GSM::internal::Energy_guided_flips<Implicit_c3t3> flips(c3t3, energy, sum, count);
+  GSM::internal::Flip_counts done;
+  for(int pass = 0; pass < 5; ++pass) {
+    const GSM::internal::Flip_counts n = flips.flip_pass();
+    done.flips_2_3 += n.flips_2_3;
+    done.flips_3_2 += n.flips_3_2;
+    done.flips_4_4 += n.flips_4_4;
+    done.edge_removals += n.edge_removals;
+    done.multi_face_removals += n.multi_face_removals;
+    if(n.total() == 0) break;
+  }
+  std::cerr << "    sphere flip passes: " << done.flips_2_3 << " 2-3, " << done.flips_3_2 << " 3-2, "
+            << done.flips_4_4 << " 4-4, " << done.edge_removals << " edge removals, "
+            << done.multi_face_removals << " multi-face removals\n";
+  // a beneficial 2-3 flip here is always outdone by the removal of more faces
+  // (4-4 flips are edge removals of rings of four; larger rings are rare around
+  // the cells worse than the mean, the only ones the pass looks at, and the
+  // hand-made rings of 5 to 7 above exercise them)
+  VVM_CHECK(done.flips_3_2 > 0 && done.flips_4_4 > 0);
+  VVM_CHECK(done.multi_face_removals > 0);
+  VVM_CHECK(complex_is_valid(c3t3));
+  const auto total = energy.total();
+  VVM_CHECK_EQUAL(count, total.second);
+  VVM_CHECK_CLOSE(sum, total.first, 1e-9 * total.first);
+  VVM_CHECK(total.first / double(total.second) < mean_before);
+}
+
 void test_bad_input()
 {
   const Implicit_domain domain = sphere_domain();
@@ -502,6 +763,151 @@ void test_cube_with_features()
   VVM_CHECK(on_faces && surface_moved);
 }
 
+// Parallel sweeps are deterministic: the batches do not depend on the threads.
+// A sizing field matters only up to a constant factor (fitted to the vertex
+// count). The adaptive run follows the field. The boundary does not get
+// farther from the input surface (Hausdorff distance, both ways, within 10%).
+void test_threads_fields_and_boundary()
+{
+  const Implicit_domain domain = sphere_domain();
+  const Implicit_c3t3 initial = make_sphere_mesh(0.2);
+  Implicit_c3t3 one = initial, two = initial;
+  CGAL::gsm_optimize_mesh_3(one, domain, GSM::parameters::number_of_threads(1, params::number_of_iterations(4)));
+  CGAL::gsm_optimize_mesh_3(two, domain, GSM::parameters::number_of_threads(2, params::number_of_iterations(4)));
+  VVM_CHECK(complex_is_valid(two));
+  VVM_CHECK(GSM::mesh_quality_statistics(one).number_of_cells == GSM::mesh_quality_statistics(two).number_of_cells);
+  std::vector<Eigen::Vector3d> p1, p2;
+  for(const auto& vp : positions(one)) p1.push_back(vp.second);
+  for(const auto& vp : positions(two)) p2.push_back(vp.second);
+  VVM_CHECK(p1 == p2);
+
+  // h and 4h (a power of two: the fitted scale is then exactly the same)
+  auto h = [](const Eigen::Vector3d& x) { return GSM::dissertation::adaptive_sphere_sizing(x); };
+  Implicit_c3t3 small = initial, large = initial;
+  CGAL::gsm_optimize_mesh_3(small, domain, GSM::parameters::sizing_field(h, params::number_of_iterations(4)));
+  CGAL::gsm_optimize_mesh_3(large, domain, GSM::parameters::sizing_field([&h](const Eigen::Vector3d& x) {
+    return 4 * h(x);
+  }, params::number_of_iterations(4)));
+  std::vector<Eigen::Vector3d> ps, pl;
+  for(const auto& vp : positions(small)) ps.push_back(vp.second);
+  for(const auto& vp : positions(large)) pl.push_back(vp.second);
+  VVM_CHECK(ps == pl);
+  VVM_CHECK(ps != p2); // and the field did change the result
+
+  // edges near |x| = 0.5 (h = 0.025) against those near the boundary (h >= 0.105)
+  auto length_ratio = [](const Implicit_c3t3& c3t3) {
+    double sum[2] = {0, 0};
+    int n[2] = {0, 0};
+    for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c)
+      for(int i = 0; i < 4; ++i)
+        for(int j = i + 1; j < 4; ++j) {
+          const auto& a = c->vertex(i)->point();
+          const auto& b = c->vertex(j)->point();
+          const Eigen::Vector3d pa(a.x(), a.y(), a.z()), pb(b.x(), b.y(), b.z());
+          const double r = (0.5 * (pa + pb)).norm();
+          const int k = r > 0.35 && r < 0.65 ? 0 : r > 0.9 ? 1 : -1;
+          if(k >= 0) { sum[k] += (pa - pb).norm(); ++n[k]; }
+        }
+    return (sum[1] / n[1]) / (sum[0] / n[0]);
+  };
+  Implicit_c3t3 adaptive = initial;
+  CGAL::gsm_optimize_mesh_3(adaptive, domain, GSM::parameters::sizing_field(h));
+  VVM_CHECK(complex_is_valid(adaptive));
+  std::printf("  adaptive sphere: boundary/middle edge length ratio %.3f before, %.3f after\n",
+              length_ratio(initial), length_ratio(adaptive));
+  VVM_CHECK(length_ratio(adaptive) > 1.05 * length_ratio(initial));
+
+  // the polyhedral sphere of data/sphere966.off, no features: surface vertices slide on it
+  Surface_mesh surface;
+  VVM_CHECK(CGAL::IO::read_polygon_mesh(std::string(VVM_DATA_DIR) + "/sphere966.off", surface));
+  Cube_domain polyhedral(surface);
+  const CGAL::Bbox_3 box = CGAL::Polygon_mesh_processing::bbox(surface);
+  const double size = 0.08 * (box.xmax() - box.xmin()); // about 2,500 vertices
+  CGAL::Mesh_criteria_3<Cube_tr> criteria(params::facet_angle = 25, params::facet_size = size,
+                                          params::facet_distance = size / 10, params::cell_radius_edge_ratio = 3,
+                                          params::cell_size = size);
+  CGAL::get_default_random() = CGAL::Random(1);
+  Cube_c3t3 c3t3 = CGAL::make_mesh_3<Cube_c3t3>(polyhedral, criteria, params::no_perturb(), params::no_exude());
+  const double density = 30000 / CGAL::Polygon_mesh_processing::area(surface); // sample points per area unit
+  auto hausdorff = [&surface, density](const Cube_c3t3& m) {
+    namespace PMP = CGAL::Polygon_mesh_processing;
+    Surface_mesh boundary;
+    CGAL::facets_in_complex_3_to_triangle_mesh(m, boundary);
+    CGAL::get_default_random() = CGAL::Random(2);
+    const double to_input = PMP::approximate_Hausdorff_distance<CGAL::Sequential_tag>(
+        boundary, surface, PMP::parameters::number_of_points_per_area_unit(density));
+    const double to_boundary = PMP::approximate_Hausdorff_distance<CGAL::Sequential_tag>(
+        surface, boundary, PMP::parameters::number_of_points_per_area_unit(density));
+    return (std::max)(to_input, to_boundary);
+  };
+  const double before = hausdorff(c3t3);
+  const double min_before = GSM::mesh_quality_statistics(c3t3).min_dihedral_angle;
+  CGAL::gsm_optimize_mesh_3(c3t3, polyhedral);
+  const double after = hausdorff(c3t3);
+  std::printf("  polyhedral sphere: Hausdorff distance to the input %.5f before, %.5f after; "
+              "min dihedral %.2f -> %.2f\n", before, after, min_before,
+              GSM::mesh_quality_statistics(c3t3).min_dihedral_angle);
+  VVM_CHECK(complex_is_valid(c3t3));
+  VVM_CHECK(before > 0 && after <= 1.1 * before);
+  VVM_CHECK(GSM::mesh_quality_statistics(c3t3).min_dihedral_angle > min_before + 5);
+}
+
+// gsm_optimize_triangulation_3 on a Delaunay triangulation of random points in a
+// box: the hull stays as it is, no cell inverts, the slivers go.
+void test_bare_triangulation()
+{
+  typedef CGAL::Delaunay_triangulation_3<K> Delaunay;
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(-1, 1);
+  std::vector<K::Point_3> points;
+  // the boundary: a 9 x 9 grid on each face of [-1,1]^3; inside: random points
+  for(int axis = 0; axis < 3; ++axis)
+    for(int side = -1; side <= 1; side += 2)
+      for(int i = 0; i <= 8; ++i)
+        for(int j = 0; j <= 8; ++j) {
+          double c[3];
+          c[axis] = side;
+          c[(axis + 1) % 3] = -1 + 0.25 * i;
+          c[(axis + 2) % 3] = -1 + 0.25 * j;
+          points.emplace_back(c[0], c[1], c[2]);
+        }
+  for(int i = 0; i < 1500; ++i) points.emplace_back(0.95 * u(rng), 0.95 * u(rng), 0.95 * u(rng));
+  Delaunay tr(points.begin(), points.end());
+  auto hull = [&tr]() {
+    std::set<std::array<K::Point_3, 3>> facets;
+    for(auto c : tr.all_cell_handles()) {
+      if(!tr.is_infinite(c)) continue;
+      const int i = c->index(tr.infinite_vertex());
+      std::array<K::Point_3, 3> f;
+      for(int k = 0; k < 3; ++k) f[k] = c->vertex((i + 1 + k) & 3)->point();
+      std::sort(f.begin(), f.end());
+      facets.insert(f);
+    }
+    return facets;
+  };
+  const auto hull_before = hull();
+  const GSM::Mesh_quality_statistics before = GSM::triangulation_quality_statistics(tr);
+  const Delaunay copy = tr;
+  const CGAL::Mesh_optimization_return_code code = CGAL::gsm_optimize_triangulation_3(tr);
+  const GSM::Mesh_quality_statistics after = GSM::triangulation_quality_statistics(tr);
+  std::printf("  bare Delaunay triangulation: min dihedral %.2f -> %.2f, tets under 20 deg %zu -> %zu\n",
+              before.min_dihedral_angle, after.min_dihedral_angle, before.n_min_dihedral_below[1],
+              after.n_min_dihedral_below[1]);
+  VVM_CHECK(code != CGAL::TIME_LIMIT_REACHED);
+  VVM_CHECK(tr.tds().is_valid());
+  VVM_CHECK_EQUAL(tr.number_of_vertices(), copy.number_of_vertices());
+  VVM_CHECK_EQUAL(after.number_of_inverted_cells, std::size_t(0));
+  VVM_CHECK(hull() == hull_before);
+  VVM_CHECK(after.min_dihedral_angle > before.min_dihedral_angle + 5);
+  VVM_CHECK(after.n_min_dihedral_below[1] * 10 < before.n_min_dihedral_below[1]);
+
+  // errors leave it unchanged
+  Delaunay flat;
+  bool thrown = false;
+  try { CGAL::gsm_optimize_triangulation_3(flat); } catch(const std::invalid_argument&) { thrown = true; }
+  VVM_CHECK(thrown);
+}
+
 } // namespace
 
 int main()
@@ -510,8 +916,14 @@ int main()
   test_flip_2_3_and_3_2();
   test_flip_4_4();
   test_boundary_peel();
+  test_polygon_triangulation();
+  test_edge_removal();
+  test_multi_face_removal();
+  test_flip_pass_on_sphere();
   test_sphere_run();
   test_bad_input();
   test_cube_with_features();
+  test_threads_fields_and_boundary();
+  test_bare_triangulation();
   return vvm_test::report("test_gsm_optimizer");
 }

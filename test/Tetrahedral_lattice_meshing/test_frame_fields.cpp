@@ -18,7 +18,10 @@
 #include <CGAL/Frame_fields/dissertation_frame_fields.h>
 #include <CGAL/Frame_fields/generate_cross_field_3.h>
 #include <CGAL/Frame_fields/internal/L4_spherical_harmonics.h>
+#include <CGAL/Frame_fields/internal/Cross_field_solver.h>
+#include <CGAL/Frame_fields/internal/Indexed_tetrahedral_mesh.h>
 #include <CGAL/Frame_fields/internal/Singular_edges.h>
+#include <CGAL/Frame_fields/internal/Uniform_grid_3.h>
 
 #include <CGAL/Delaunay_triangulation_3.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -46,7 +49,7 @@ typedef CGAL::Delaunay_triangulation_3<K> Delaunay;
 namespace FF = CGAL::Frame_fields;
 namespace FFI = CGAL::Frame_fields::internal;
 
-const double pi = 3.14159265358979323846;
+const double pi = CGAL_PI;
 
 template <class F>
 bool throws_invalid_argument(F f, const char* expected_words = "")
@@ -232,6 +235,10 @@ void test_dissertation_fields()
   VVM_CHECK(all_cylinder);
   // the values the figures name: T_xx = 0.0125 at x = 0.6 (finest), 0.05 on the circle r = 7
   VVM_CHECK_CLOSE(single.T(Point(0.6, 0.5, 0.5))(0, 0), 0.0125, 1e-15);
+  // Fig. 4.15d's T is this field's B, built as its documentation says
+  const FF::Closed_form_frame_field_3<K> fig_4_15d([single](const Point& p) { return single.B(p); });
+  VVM_CHECK_CLOSE(fig_4_15d.T(Point(0.6, 0.5, 0.5))(0, 0), 80, 1e-9);
+  VVM_CHECK_CLOSE(fig_4_15d.T(Point(0.1, 0.5, 0.5))(0, 0), 1 / (1.0125 - std::exp(-0.5)), 1e-12);
   VVM_CHECK_CLOSE(cylindrical.T(Point(0, 7, 3)).col(0).norm(), 0.05, 1e-12);
   VVM_CHECK((cylindrical.T(Point(0, 7, 3)).col(0).normalized() - Eigen::Vector3d(0, 1, 0)).norm() < 1e-12);
   VVM_CHECK_CLOSE(linear.T(Point(-0.5, 0, 0))(0, 0), -4, 1e-15);
@@ -337,6 +344,51 @@ void test_discrete_fields()
   VVM_CHECK(throws_invalid_argument([&] {
     FF::Discrete_frame_field_3<K>(m.points, m.cells, frames, FF::Frame_location::VERTICES); }, "of vertex 42"));
   VVM_CHECK(throws_invalid_argument([&] { FF::Discrete_frame_field_3<K>().T(Point(0, 0, 0)); }, "empty"));
+
+  // queries that are not finite are refused, on vertices and on cells, by T, B and index_of
+  const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
+  for(const Point& bad : {Point(nan, 0.5, 0.2), Point(0.5, inf, 0.2), Point(0.5, 0.5, -inf), Point(nan, nan, nan)}) {
+    for(const FF::Discrete_frame_field_3<K>* f : {&on_vertices, &on_cells}) {
+      VVM_CHECK(throws_invalid_argument([&] { f->T(bad); }, "not finite"));
+      VVM_CHECK(throws_invalid_argument([&] { f->B(bad); }, "not finite"));
+      VVM_CHECK(throws_invalid_argument([&] { f->index_of(bad); }, "not finite"));
+    }
+  }
+  // far queries, up to where squared distances overflow (every point then ties, and the
+  // smallest index wins, as in the brute force below): a valid index, the brute-force one
+  std::size_t far_mismatches = 0;
+  for(const Point& far : {Point(1e10, -3e9, 7e9), Point(1e154, 0.5, 0.2), Point(1e200, 1e200, 1e200),
+                          Point(-1e200, 0.5, 0.2), Point(0.5, -1e160, 1e300), Point(-1e200, -1e200, -1e200)}) {
+    const Eigen::Vector3d q = xyz(far);
+    std::size_t nearest = 0, cell = 0;
+    for(std::size_t v = 1; v < m.points.size(); ++v)
+      if((xyz(m.points[v]) - q).squaredNorm() < (xyz(m.points[nearest]) - q).squaredNorm()) nearest = v;
+    for(std::size_t c = 1; c < m.cells.size(); ++c)
+      if((centroids[c] - q).squaredNorm() < (centroids[cell] - q).squaredNorm()) cell = c;
+    if(on_vertices.index_of(far) != nearest || (on_vertices.T(far) - on_vertices.frames()[nearest]).norm() != 0)
+      ++far_mismatches;
+    if(on_cells.index_of(far) != cell || (on_cells.B(far) - on_cells.inverse_frames()[cell]).norm() != 0)
+      ++far_mismatches;
+  }
+  VVM_CHECK_EQUAL(far_mismatches, std::size_t(0));
+
+  // the grid alone, on points whose grid corners are empty: a far query lands (clamped)
+  // in an empty corner cell and must still find the nearest point
+  std::vector<Eigen::Vector3d> ring;
+  for(int i = 0; i < 64; ++i)
+    ring.emplace_back(std::cos(2 * pi * i / 64), std::sin(2 * pi * i / 64), 0.01 * (i % 3));
+  const FFI::Uniform_grid_3 grid(ring, ring);
+  std::size_t grid_mismatches = 0;
+  for(const Eigen::Vector3d& q : {Eigen::Vector3d(1e200, 1e200, 0), Eigen::Vector3d(-1e300, -1e300, -1e300),
+                                  Eigen::Vector3d(5, 5, 5), Eigen::Vector3d(1e154, -1e154, 0),
+                                  Eigen::Vector3d(0.99, 0.99, 0.02), Eigen::Vector3d(-3, 2, -1e6)}) {
+    std::size_t nearest = 0;
+    for(std::size_t i = 1; i < ring.size(); ++i)
+      if((ring[i] - q).squaredNorm() < (ring[nearest] - q).squaredNorm()) nearest = i;
+    const std::ptrdiff_t found = grid.nearest(q, [&](std::size_t i) { return ring[i]; });
+    if(found < 0 || std::size_t(found) != nearest) ++grid_mismatches;
+  }
+  VVM_CHECK_EQUAL(grid_mismatches, std::size_t(0));
 }
 
 void test_text_format()
@@ -379,6 +431,23 @@ void test_text_format()
   VVM_CHECK(vtu.str().find("<CellData Vectors=\"axis_1\">") != std::string::npos);
   VVM_CHECK(vtu.str().find("Name=\"axis_3\"") != std::string::npos);
   VVM_CHECK(vtu.str().find("NumberOfPoints=\"4\" NumberOfCells=\"1\"") != std::string::npos);
+  // the writers leave the caller's stream precision as it was, and write 17 digits
+  std::ostringstream os;
+  os.precision(3);
+  FF::IO::write_VTU(os, one);
+  VVM_CHECK_EQUAL(os.precision(), std::streamsize(3));
+  FF::IO::write_frame_field(os, one);
+  VVM_CHECK_EQUAL(os.precision(), std::streamsize(3));
+  FF::IO::write_edges_VTU(os, one.points(), std::vector<std::array<std::size_t, 2>>{{{0, 1}}});
+  VVM_CHECK_EQUAL(os.precision(), std::streamsize(3));
+  std::ostringstream third;
+  FF::IO::write_edges_VTU(third, std::vector<Point>{Point(1. / 3, 0, 0), Point(0, 1, 0)},
+                          std::vector<std::array<std::size_t, 2>>{{{0, 1}}});
+  VVM_CHECK(third.str().find("0.33333333333333331 0 0") != std::string::npos);
+  VVM_CHECK(third.str().find("<DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n2\n</DataArray>") !=
+            std::string::npos);
+  VVM_CHECK(third.str().find("Name=\"types\" format=\"ascii\">\n3\n</DataArray>\n</Cells>\n</Piece>") !=
+            std::string::npos);
 }
 
 // the largest angle between an axis of any vertex frame and the nearest of x, y, z
@@ -421,6 +490,7 @@ void test_cube()
   VVM_CHECK_EQUAL(g.feature_edges.size(), std::size_t(12 * 8)); // the cube's 12 edges, 8 segments each
   VVM_CHECK_CLOSE(g.field.T(Point(0.1, 0.2, 0.3)).col(0).norm(), 0.25, 1e-12);
   VVM_CHECK(g.smoothness_energy < 1e-12);
+  VVM_CHECK_EQUAL(g.number_of_corner_vertices, std::size_t(8)); // constrained to a face normal
 
   // the same through a Mesh_complex_3_in_triangulation_3 built by hand: cells, hull
   // facets and the cube's edges in the complex
@@ -463,6 +533,66 @@ void test_cube()
     FF::generate_cross_field_3(dt, FF::parameters::features_angle(std::numeric_limits<double>::quiet_NaN())); }, "features_angle"));
   VVM_CHECK(throws_invalid_argument([&] {
     FF::generate_cross_field_3(dt, CGAL::parameters::number_of_iterations(-1)); }, "number_of_iterations"));
+}
+
+// The vertices of sharp edges where no edge gives the axis (corners, curve ends, sharp
+// turns) are constrained to a boundary facet normal, and the least-squares solve falls
+// back to a direct solver when CG does not converge.
+void test_corners_and_solver()
+{
+  CGAL::Random r(23);
+  const std::vector<Point> points = jittered_cube_grid(6, r);
+  const Delaunay dt(points.begin(), points.end());
+  const auto mesh = FFI::indexed_mesh(dt, 60.);
+  std::set<std::size_t> boundary;
+  for(const auto& f : mesh.boundary_facets) boundary.insert(f.begin(), f.end());
+  auto is_cube_axis = [](const Eigen::Vector3d& a) { return a.cwiseAbs().maxCoeff() > 1 - 1e-12; };
+  auto run = [&](const std::vector<std::array<std::size_t, 2>>& sharp, std::size_t expected_corners,
+                 const char* what) {
+    FFI::Cross_field_solver solver(mesh.xyz, mesh.cells, mesh.boundary_facets, sharp);
+    std::set<std::size_t> on_sharp;
+    for(const auto& e : sharp) on_sharp.insert(e.begin(), e.end());
+    std::size_t free_boundary = 0, bad_corner_axes = 0;
+    for(std::size_t v : boundary) {
+      const Eigen::Vector3d& a = solver.constrained_axes()[v];
+      if(a.squaredNorm() == 0) ++free_boundary;
+      else if(on_sharp.count(v) && !is_cube_axis(a)) ++bad_corner_axes; // a face normal or an edge
+    }
+    std::cout << "corners (" << what << "): " << solver.number_of_corner_vertices() << " corner vertices, "
+              << free_boundary << " free boundary vertices\n";
+    VVM_CHECK_EQUAL(free_boundary, std::size_t(0)); // every boundary vertex is constrained
+    VVM_CHECK_EQUAL(bad_corner_axes, std::size_t(0));
+    VVM_CHECK_EQUAL(solver.number_of_corner_vertices(), expected_corners);
+    VVM_CHECK_EQUAL(solver.number_of_constrained_vertices(), boundary.size());
+  };
+  // the cube's 12 edges: 3 meet at each of the 8 corners
+  run(mesh.feature_edges, 8, "12 edges");
+  // without the edges along z: 2 edges turning by 90 degrees at each corner
+  std::vector<std::array<std::size_t, 2>> xy_edges;
+  for(const auto& e : mesh.feature_edges)
+    if(std::abs(mesh.xyz[e[0]].z() - mesh.xyz[e[1]].z()) > 1e-12) continue;
+    else xy_edges.push_back(e);
+  run(xy_edges, 8, "turns");
+  // a single sharp edge: its two ends, each with one sharp edge
+  run({mesh.feature_edges.front()}, 2, "curve ends");
+
+  // CG stopped after one iteration: the sparse LDLT gives the same field
+  FFI::Cross_field_solver solver(mesh.xyz, mesh.cells, mesh.boundary_facets, mesh.feature_edges);
+  const FFI::Cross_field_solution cg = solver.solve(2, false);
+  solver.set_max_iterations(1);
+  const FFI::Cross_field_solution direct = solver.solve(2, false);
+  double worst = 0;
+  for(std::size_t v = 0; v < cg.vertex_frames.size(); ++v)
+    worst = std::max(worst, cross_distance(cg.vertex_frames[v], direct.vertex_frames[v]));
+  std::cout << "least squares: CG " << cg.solver_iterations << " iterations, error " << cg.solver_error
+            << "; LDLT error " << direct.solver_error << ", frames within " << worst << "\n";
+  VVM_CHECK(!cg.direct_solver && cg.solver_iterations > 1 && cg.solver_error <= 1e-8);
+  VVM_CHECK(direct.direct_solver && direct.solver_iterations == 1 && direct.solver_error < 1e-10);
+  VVM_CHECK(worst < 1e-6);
+  // and generate_cross_field_3 reports the solve
+  const FF::Generated_cross_field_3<K> g = FF::generate_cross_field_3(dt);
+  VVM_CHECK_EQUAL(g.number_of_corner_vertices, std::size_t(8));
+  VVM_CHECK(g.solver_iterations > 0 && g.solver_error <= 1e-8 && !g.direct_solver);
 }
 
 void test_cylinder()
@@ -586,6 +716,7 @@ int main()
   test_discrete_fields();
   test_text_format();
   test_cube();
+  test_corners_and_solver();
   test_cylinder();
   test_singular_edge_detector();
   return vvm_test::report("test_frame_fields");

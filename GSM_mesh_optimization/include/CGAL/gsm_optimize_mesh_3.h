@@ -8,6 +8,7 @@
 #define CGAL_GSM_OPTIMIZE_MESH_3_H
 
 #include <CGAL/GSM_mesh_optimization/internal/GSM_optimizer.h>
+#include <CGAL/GSM_mesh_optimization/internal/Triangulation_complex.h>
 #include <CGAL/GSM_mesh_optimization/parameters.h>
 #include <CGAL/GSM_mesh_optimization/shape_matching_energy.h>
 #include <CGAL/GSM_mesh_optimization/tetrahedron_quality.h>
@@ -17,12 +18,14 @@
 
 #include <tbb/global_control.h>
 
+#include <array>
 #include <cmath>
 #include <functional>
 #include <memory>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
+#include <unordered_set>
 
 namespace CGAL {
 
@@ -43,10 +46,10 @@ void check_input_mesh(const C3T3& c3t3)
 {
   const auto& tr = c3t3.triangulation();
   if(tr.dimension() != 3 || c3t3.number_of_cells_in_complex() == 0)
-    throw std::invalid_argument("gsm_optimize_mesh_3: the complex has no cell");
+    throw std::invalid_argument("GSM: the complex has no cell");
   for(auto v : tr.finite_vertex_handles()) {
     if(!to_eigen(tr.point(v)).allFinite())
-      throw std::invalid_argument("gsm_optimize_mesh_3: a vertex has a non-finite coordinate");
+      throw std::invalid_argument("GSM: a vertex has a non-finite coordinate");
   }
   std::size_t inverted = 0;
   for(auto c : tr.finite_cell_handles()) {
@@ -56,14 +59,16 @@ void check_input_mesh(const C3T3& c3t3)
       ++inverted;
   }
   if(inverted > 0)
-    throw std::invalid_argument("gsm_optimize_mesh_3: the triangulation has " + std::to_string(inverted) +
+    throw std::invalid_argument("GSM: the triangulation has " + std::to_string(inverted) +
                                 " inverted or flat cells");
 }
 
-// Template edge length of eq. 3.21: the regular tet edge l of a BCC-like mesh with
-// N vertices in a domain of volume V and boundary area A: V = N l^3 / sqrt(2) - A l / sqrt(6).
+// Template edge length of eq. 3.21, measured in the metric: the regular tet edge l of a
+// BCC-like mesh with N vertices in a domain of volume V and boundary area A (both
+// mapped by B): V = N l^3 / sqrt(2) - A l / sqrt(6). Evaluating B at every cell also
+// rejects a bad field before anything changes.
 template <class C3T3>
-double estimated_edge_length(const C3T3& c3t3)
+double estimated_edge_length(const C3T3& c3t3, const Metric_field& metric = Metric_field::uniform(1.))
 {
   const auto& tr = c3t3.triangulation();
   double volume = 0, area = 0;
@@ -74,18 +79,20 @@ double estimated_edge_length(const C3T3& c3t3)
       p[i] = to_eigen(tr.point(c, i));
       vertices.insert(&*c->vertex(i));
     }
-    volume += std::abs((p[1] - p[0]).dot((p[2] - p[0]).cross(p[3] - p[0]))) / 6.;
+    const double det = metric(0.25 * (p[0] + p[1] + p[2] + p[3])).determinant();
+    volume += std::abs(det * (p[1] - p[0]).dot((p[2] - p[0]).cross(p[3] - p[0]))) / 6.;
   }
   for(auto f = c3t3.facets_in_complex_begin(); f != c3t3.facets_in_complex_end(); ++f) {
     std::array<Eigen::Vector3d, 3> p;
     for(int k = 0; k < 3; ++k) p[k] = to_eigen(tr.point(f->first, (f->second + 1 + k) & 3));
-    area += 0.5 * (p[1] - p[0]).cross(p[2] - p[0]).norm();
+    const Eigen::Matrix3d B = metric((p[0] + p[1] + p[2]) / 3.);
+    area += 0.5 * (B * (p[1] - p[0])).cross(B * (p[2] - p[0])).norm();
   }
   const double n = double(vertices.size());
   // f(l) = N l^3 / sqrt 2 - A l / sqrt 6 - V is increasing past its minimum: bisect there
   auto f = [&](double l) { return n * l * l * l / std::sqrt(2.) - area * l / std::sqrt(6.) - volume; };
   double lo = std::sqrt(area * std::sqrt(2.) / (3. * std::sqrt(6.) * n)), hi = (std::max)(2. * lo, 1e-12);
-  while(f(hi) < 0) hi *= 2;
+  while(f(hi) < 0 && hi < 1e300) hi *= 2;
   for(int i = 0; i < 100; ++i) {
     const double mid = 0.5 * (lo + hi);
     (f(mid) < 0 ? lo : hi) = mid;
@@ -93,15 +100,75 @@ double estimated_edge_length(const C3T3& c3t3)
   return hi;
 }
 
+
+// The common part of gsm_optimize_mesh_3() and gsm_optimize_triangulation_3():
+// named parameters, checks, the metric fitted to the vertex count, the run.
+// `domain` is null for a bare triangulation (MeshDomain void).
+template <class C3T3, class MeshDomain, class NamedParameters>
+Mesh_optimization_return_code
+gsm_optimize(C3T3& c3t3, const MeshDomain* domain, bool boundary_fixed, const NamedParameters& np)
+{
+  namespace GSM = GSM_mesh_optimization;
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+
+  GSM::internal::check_input_mesh(c3t3);
+
+  GSM::internal::GSM_options options;
+  options.max_rounds = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), 50);
+  options.time_limit = choose_parameter(get_parameter(np, CGAL::internal_np::maximum_running_time), 0.);
+  options.do_flip = choose_parameter(get_parameter(np, CGAL::internal_np::do_flip), true);
+  options.verbose = choose_parameter(get_parameter(np, CGAL::internal_np::verbose), false);
+  options.convergence =
+      choose_parameter(get_parameter(np, GSM::internal_np::convergence_threshold), 1e-4);
+  options.freeze_boundary =
+      boundary_fixed || choose_parameter(get_parameter(np, GSM::internal_np::freeze_boundary), false);
+  options.energy = choose_parameter(get_parameter(np, GSM::internal_np::energy),
+                                    GSM::Shape_matching_energy::GSM);
+  const int threads = choose_parameter(get_parameter(np, GSM::internal_np::number_of_threads), 0);
+  if(options.max_rounds < 0 || options.time_limit < 0 || !(options.convergence >= 0) || threads < 0)
+    throw std::invalid_argument("GSM: negative iteration count, time limit, "
+                                "convergence threshold or thread count");
+
+  auto visitor = get_parameter(np, CGAL::internal_np::visitor);
+  if constexpr(!std::is_same<decltype(visitor), CGAL::internal_np::Param_not_found>::value)
+    options.visitor = [visitor](const GSM::Round_report& r) { visitor(r); };
+
+  auto sizing = get_parameter(np, GSM::internal_np::sizing_field);
+  auto metric_field = get_parameter(np, GSM::internal_np::metric_field);
+  constexpr bool has_sizing = !std::is_same<decltype(sizing), CGAL::internal_np::Param_not_found>::value;
+  constexpr bool has_metric = !std::is_same<decltype(metric_field), CGAL::internal_np::Param_not_found>::value;
+  static_assert(!(has_sizing && has_metric),
+                "GSM: give a sizing field or a metric field, not both");
+  GSM::internal::Metric_field metric = GSM::internal::Metric_field::uniform(1.);
+  if constexpr(has_sizing)
+    metric = GSM::internal::Metric_field::sizing(
+        [sizing](const Eigen::Vector3d& x) { return double(sizing(x)); });
+  else if constexpr(has_metric)
+    metric = GSM::internal::Metric_field::anisotropic(
+        [metric_field](const Eigen::Vector3d& x) { return Eigen::Matrix3d(metric_field(x)); });
+  // The field gives shape and relative size; the vertex count gives the absolute size.
+  metric = metric.scaled(1. / GSM::internal::estimated_edge_length(c3t3, metric));
+
+  std::unique_ptr<tbb::global_control> thread_limit;
+  if(threads > 0)
+    thread_limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
+                                                         std::size_t(threads));
+  GSM::internal::GSM_optimizer<C3T3, MeshDomain> optimizer(c3t3, domain, metric, options);
+  return optimizer();
+}
+
 } // namespace internal
 } // namespace GSM_mesh_optimization
+
 
 /*!
  * \ingroup PkgGSMMeshOptimizationRef
  *
  * optimizes the cells in the complex of `c3t3` by Gradient-based Shape Matching:
- * rounds of per-vertex Newton smoothing with a backtracking line search and of
- * 2-3, 3-2 and 4-4 flips, each accepted only if it lowers the mean GSM energy
+ * rounds of per-vertex Newton smoothing with a backtracking line search (in
+ * parallel) and of flips (2-3, 3-2, 4-4, edge removal and multi-face removal),
+ * each accepted only if it lowers the mean GSM energy
  * of the cells, so that the shape of every tetrahedron comes close to the
  * regular tetrahedron of the target size (dissertation ch. 3). Slivers have a
  * huge GSM energy, so they are removed first.
@@ -151,17 +218,25 @@ double estimated_edge_length(const C3T3& c3t3)
  *     \cgalParamDefault{true}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{GSM_mesh_optimization::parameters::freeze_boundary}
- *     \cgalParamDescription{if `true`, surface, feature-curve and corner vertices stay where they are}
+ *     \cgalParamDescription{if `true`, surface, feature-curve and corner vertices stay where they
+ *       are and no flat boundary cell is peeled: the boundary does not change}
  *     \cgalParamType{bool}
  *     \cgalParamDefault{false}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{GSM_mesh_optimization::parameters::sizing_field}
- *     \cgalParamDescription{the target edge length `h(p)` (adaptive meshing): cells are measured after scaling by `1/h`}
+ *     \cgalParamDescription{the relative target edge length `h(p)` (adaptive meshing): cells are
+ *       measured after scaling by `1/h`. Only the variation of `h` matters: it is multiplied by the
+ *       constant that makes its target edges fit the number of vertices of the mesh (eq. 3.21
+ *       measured with `h`), so a field proportional to the one given to `make_mesh_3()` is fine.
+ *       It is called from several threads at once.}
  *     \cgalParamType{a callable `double(const Eigen::Vector3d&)`, positive and finite}
- *     \cgalParamDefault{a uniform length estimated from the volume, boundary area and vertex count (eq. 3.21)}
+ *     \cgalParamDefault{uniform: a length estimated from the volume, boundary area and vertex count (eq. 3.21)}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{GSM_mesh_optimization::parameters::metric_field}
- *     \cgalParamDescription{an anisotropic metric `M(p)`: cells are measured after mapping by `M^{1/2}`}
+ *     \cgalParamDescription{an anisotropic metric `M(p)`: cells are measured after mapping by
+ *       `M^{1/2}`, so the target tetrahedron is regular in the metric. As for `sizing_field`,
+ *       `M` is scaled by one constant so that its target edges fit the vertex count. It is called
+ *       from several threads at once.}
  *     \cgalParamType{a callable `Eigen::Matrix3d(const Eigen::Vector3d&)`, symmetric positive definite}
  *     \cgalParamDefault{isotropic}
  *   \cgalParamNEnd
@@ -171,7 +246,8 @@ double estimated_edge_length(const C3T3& c3t3)
  *     \cgalParamDefault{`Shape_matching_energy::GSM`}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{GSM_mesh_optimization::parameters::number_of_threads}
- *     \cgalParamDescription{the largest number of threads used; 0 lets TBB choose}
+ *     \cgalParamDescription{the largest number of threads of the vertex sweeps; 0 lets TBB choose.
+ *       The result does not depend on it.}
  *     \cgalParamType{int}
  *     \cgalParamDefault{0}
  *   \cgalParamNEnd
@@ -201,58 +277,38 @@ Mesh_optimization_return_code
 gsm_optimize_mesh_3(C3T3& c3t3, const MeshDomain& domain,
                     const NamedParameters& np = parameters::default_values())
 {
-  namespace GSM = GSM_mesh_optimization;
-  using parameters::choose_parameter;
-  using parameters::get_parameter;
-  using parameters::is_default_parameter;
+  return GSM_mesh_optimization::internal::gsm_optimize(c3t3, &domain, false, np);
+}
 
-  GSM::internal::check_input_mesh(c3t3);
-
-  GSM::internal::GSM_options options;
-  options.max_rounds = choose_parameter(get_parameter(np, internal_np::number_of_iterations), 50);
-  options.time_limit = choose_parameter(get_parameter(np, internal_np::maximum_running_time), 0.);
-  options.do_flip = choose_parameter(get_parameter(np, internal_np::do_flip), true);
-  options.verbose = choose_parameter(get_parameter(np, internal_np::verbose), false);
-  options.convergence =
-      choose_parameter(get_parameter(np, GSM::internal_np::convergence_threshold), 1e-4);
-  options.freeze_boundary =
-      choose_parameter(get_parameter(np, GSM::internal_np::freeze_boundary), false);
-  options.energy = choose_parameter(get_parameter(np, GSM::internal_np::energy),
-                                    GSM::Shape_matching_energy::GSM);
-  const int threads = choose_parameter(get_parameter(np, GSM::internal_np::number_of_threads), 0);
-  if(options.max_rounds < 0 || options.time_limit < 0 || !(options.convergence >= 0) || threads < 0)
-    throw std::invalid_argument("gsm_optimize_mesh_3: negative iteration count, time limit, "
-                                "convergence threshold or thread count");
-
-  auto visitor = get_parameter(np, internal_np::visitor);
-  if constexpr(!std::is_same<decltype(visitor), internal_np::Param_not_found>::value)
-    options.visitor = [visitor](const GSM::Round_report& r) { visitor(r); };
-
-  auto sizing = get_parameter(np, GSM::internal_np::sizing_field);
-  auto metric_field = get_parameter(np, GSM::internal_np::metric_field);
-  constexpr bool has_sizing = !std::is_same<decltype(sizing), internal_np::Param_not_found>::value;
-  constexpr bool has_metric = !std::is_same<decltype(metric_field), internal_np::Param_not_found>::value;
-  static_assert(!(has_sizing && has_metric),
-                "gsm_optimize_mesh_3: give a sizing field or a metric field, not both");
-  GSM::internal::Metric_field metric = GSM::internal::Metric_field::uniform(1.);
-  if constexpr(has_sizing)
-    metric = GSM::internal::Metric_field::sizing(
-        [sizing](const Eigen::Vector3d& x) { return double(sizing(x)); });
-  else if constexpr(has_metric)
-    metric = GSM::internal::Metric_field::anisotropic(
-        [metric_field](const Eigen::Vector3d& x) { return Eigen::Matrix3d(metric_field(x)); });
-  else
-    metric = GSM::internal::Metric_field::uniform(GSM::internal::estimated_edge_length(c3t3));
-  if(!metric.is_constant()) // throws now, on a bad field, rather than in the middle of the work
-    for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c)
-      metric(GSM::internal::centroid_of(c3t3, c));
-
-  std::unique_ptr<tbb::global_control> thread_limit;
-  if(threads > 0)
-    thread_limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
-                                                         std::size_t(threads));
-  GSM::internal::GSM_optimizer<C3T3, MeshDomain> optimizer(c3t3, &domain, metric, options);
-  return optimizer();
+/*!
+ * \ingroup PkgGSMMeshOptimizationRef
+ *
+ * optimizes the finite cells of a bare triangulation by Gradient-based Shape
+ * Matching, as `gsm_optimize_mesh_3()` does for a complex: rounds of Newton
+ * smoothing of the interior vertices and of energy-guided flips (2-3, 3-2, 4-4,
+ * edge removal, multi-face removal). Its boundary, the convex hull, is fixed:
+ * hull vertices do not move and no flip touches a hull facet. The triangulation
+ * is no longer Delaunay (or regular) afterwards; cells are never inverted.
+ *
+ * \tparam Triangulation_3 a CGAL 3D triangulation (`Triangulation_3`,
+ *   `Delaunay_triangulation_3` or `Regular_triangulation_3`) with an exact-predicates kernel
+ * \tparam NamedParameters a sequence of named parameters
+ *
+ * \param tr the triangulation, modified in place
+ * \param np the named parameters of `gsm_optimize_mesh_3()` (`freeze_boundary` is implied)
+ *
+ * \return as `gsm_optimize_mesh_3()`
+ * \throw std::invalid_argument, before `tr` is changed, in the cases of `gsm_optimize_mesh_3()`
+ *   (no cell, a non-finite coordinate, an inverted or flat cell, a bad field).
+ */
+template <class Triangulation_3, class NamedParameters = parameters::Default_named_parameters>
+Mesh_optimization_return_code
+gsm_optimize_triangulation_3(Triangulation_3& tr, const NamedParameters& np = parameters::default_values())
+{
+  if(tr.dimension() != 3)
+    throw std::invalid_argument("gsm_optimize_triangulation_3: the triangulation has no cell");
+  GSM_mesh_optimization::internal::Triangulation_complex<Triangulation_3> complex(tr);
+  return GSM_mesh_optimization::internal::gsm_optimize(complex, static_cast<const void*>(nullptr), true, np);
 }
 
 } // namespace CGAL

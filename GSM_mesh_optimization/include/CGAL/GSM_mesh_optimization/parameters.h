@@ -13,6 +13,8 @@
 #ifndef CGAL_GSM_MESH_OPTIMIZATION_PARAMETERS_H
 #define CGAL_GSM_MESH_OPTIMIZATION_PARAMETERS_H
 
+#include <CGAL/GSM_mesh_optimization/internal/add_named_parameter.h>
+
 #include <CGAL/Named_function_parameters.h>
 
 namespace CGAL {
@@ -30,35 +32,18 @@ enum number_of_threads_t { number_of_threads };
 
 namespace parameters {
 
-#define CGAL_GSM_ADD_NAMED_PARAMETER(NAME)                                                        \
-  template <class T>                                                                             \
-  CGAL::Named_function_parameters<T, internal_np::NAME##_t> NAME(const T& t)                     \
-  {                                                                                              \
-    return CGAL::Named_function_parameters<T, internal_np::NAME##_t>(t);                         \
-  }                                                                                              \
-  template <class T, class NP_T, class NP_Tag, class NP_Base>                                    \
-  CGAL::Named_function_parameters<T, internal_np::NAME##_t,                                      \
-                                  CGAL::Named_function_parameters<NP_T, NP_Tag, NP_Base>>        \
-  NAME(const T& t, const CGAL::Named_function_parameters<NP_T, NP_Tag, NP_Base>& np)             \
-  {                                                                                              \
-    return CGAL::Named_function_parameters<T, internal_np::NAME##_t,                             \
-                                           CGAL::Named_function_parameters<NP_T, NP_Tag, NP_Base>>(t, np); \
-  }
-
 /// `Shape_matching_energy::GSM` (default) or `Shape_matching_energy::ESM`
-CGAL_GSM_ADD_NAMED_PARAMETER(energy)
+CGAL_VVM_ADD_NAMED_PARAMETER(energy)
 /// `bool`: keep every surface, feature-curve and corner vertex where it is (default `false`)
-CGAL_GSM_ADD_NAMED_PARAMETER(freeze_boundary)
+CGAL_VVM_ADD_NAMED_PARAMETER(freeze_boundary)
 /// a callable `double(const Point_3&)`: the target edge length at a point (adaptive meshing)
-CGAL_GSM_ADD_NAMED_PARAMETER(sizing_field)
+CGAL_VVM_ADD_NAMED_PARAMETER(sizing_field)
 /// a callable `Eigen::Matrix3d(const Point_3&)`: the anisotropic metric M(x), symmetric positive definite
-CGAL_GSM_ADD_NAMED_PARAMETER(metric_field)
+CGAL_VVM_ADD_NAMED_PARAMETER(metric_field)
 /// `double`: stop when a round lowers the mean energy by less than this fraction (default 1e-4)
-CGAL_GSM_ADD_NAMED_PARAMETER(convergence_threshold)
+CGAL_VVM_ADD_NAMED_PARAMETER(convergence_threshold)
 /// `int`: the number of threads of the vertex sweeps (default 0: TBB's choice)
-CGAL_GSM_ADD_NAMED_PARAMETER(number_of_threads)
-
-#undef CGAL_GSM_ADD_NAMED_PARAMETER
+CGAL_VVM_ADD_NAMED_PARAMETER(number_of_threads)
 
 } // namespace parameters
 } // namespace GSM_mesh_optimization

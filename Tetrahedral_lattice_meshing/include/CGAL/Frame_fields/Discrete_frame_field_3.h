@@ -10,7 +10,8 @@
 #include <CGAL/Frame_fields/frame_inverse.h>
 #include <CGAL/Frame_fields/internal/Uniform_grid_3.h>
 
-#include <CGAL/number_utils.h>
+#include <CGAL/GSM_mesh_optimization/tetrahedron_quality.h> // internal::to_eigen
+#include <CGAL/assertions.h>
 
 #include <Eigen/Core>
 #include <Eigen/LU>
@@ -18,6 +19,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -83,7 +85,7 @@ public:
                                   (location_ == Frame_location::VERTICES ? " vertices" : " cells"));
     xyz_.reserve(points_.size());
     for(const Point_3& p : points_) {
-      xyz_.emplace_back(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+      xyz_.push_back(GSM_mesh_optimization::internal::to_eigen(p));
       if(!xyz_.back().allFinite())
         throw std::invalid_argument(std::string(who) + "a vertex has a non-finite coordinate");
     }
@@ -99,22 +101,40 @@ public:
     build_grids();
   }
 
+  /// the frame \f$ T \f$ at `p`
+  /// \throws std::invalid_argument as `index_of()`
   Matrix T(const Point_3& p) const { return T_[index_of(p)]; }
+  /// its inverse \f$ B \f$ at `p`
+  /// \throws std::invalid_argument as `index_of()`
   Matrix B(const Point_3& p) const { return B_[index_of(p)]; }
 
-  /// the index of the vertex or cell whose frame is used at `p`
+  /// the index of the vertex or cell whose frame is used at `p`. Far from the mesh
+  /// (beyond about \f$ 10^{154} \f$, where squared distances overflow) every vertex or
+  /// centroid is equally near and the smallest index is returned.
+  /// \throws std::invalid_argument if the field is empty (default constructed) or a
+  ///   coordinate of `p` is NaN or infinite
   std::size_t index_of(const Point_3& p) const
   {
     if(T_.empty()) throw std::invalid_argument("Discrete_frame_field_3: the field is empty");
-    const Eigen::Vector3d x(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
-    if(location_ == Frame_location::VERTICES)
-      return std::size_t(vertex_grid_.nearest(x, [this](std::size_t i) { return xyz_[i]; }));
-    std::size_t found = cells_.size();
-    cell_grid_.for_each_in_cell(x, [&](std::size_t c) {
-      if(c < found && contains(c, x)) found = c;
-    });
-    if(found < cells_.size()) return found;
-    return std::size_t(centroid_grid_.nearest(x, [this](std::size_t c) { return centroids_[c]; }));
+    const Eigen::Vector3d x = GSM_mesh_optimization::internal::to_eigen(p);
+    if(!x.allFinite()) {
+      std::ostringstream os;
+      os << "Discrete_frame_field_3: the query point (" << x.transpose() << ") is not finite";
+      throw std::invalid_argument(os.str());
+    }
+    std::ptrdiff_t found = -1;
+    if(location_ == Frame_location::VERTICES) {
+      found = vertex_grid_.nearest(x, [this](std::size_t i) { return xyz_[i]; });
+    } else {
+      std::size_t inside = cells_.size();
+      cell_grid_.for_each_in_cell(x, [&](std::size_t c) {
+        if(c < inside && contains(c, x)) inside = c;
+      });
+      found = inside < cells_.size() ? std::ptrdiff_t(inside)
+                                     : centroid_grid_.nearest(x, [this](std::size_t c) { return centroids_[c]; });
+    }
+    CGAL_assertion(found >= 0 && std::size_t(found) < T_.size());
+    return std::size_t(found);
   }
 
   /// `true` if cell `c` contains `x` (boundary included, up to rounding)

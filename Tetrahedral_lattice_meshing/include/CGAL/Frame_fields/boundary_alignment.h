@@ -9,6 +9,9 @@
 
 #include <CGAL/Frame_fields/generate_cross_field_3.h>
 #include <CGAL/Frame_fields/internal/L4_spherical_harmonics.h>
+#include <CGAL/GSM_mesh_optimization/tetrahedron_quality.h> // internal::to_eigen
+
+#include <CGAL/number_type_config.h> // CGAL_PI
 
 #include <Eigen/Core>
 
@@ -43,7 +46,7 @@ inline double angle_to_nearest_axis(const Eigen::Matrix3d& T, const Eigen::Vecto
   double best = 0;
   for(int a = 0; a < 3; ++a)
     best = (std::max)(best, std::abs(T.col(a).normalized().dot(n.normalized())));
-  return std::acos((std::min)(1., best)) * 180 / 3.14159265358979323846;
+  return std::acos((std::min)(1., best)) * 180 / CGAL_PI;
 }
 
 /*!
@@ -65,10 +68,7 @@ Boundary_alignment_statistics boundary_alignment_statistics(const Generated_cros
     R.colwise().normalize();
     c[v] = sh.frame(R);
   }
-  auto xyz = [&](std::size_t v) {
-    return Eigen::Vector3d(CGAL::to_double(points[v].x()), CGAL::to_double(points[v].y()),
-                           CGAL::to_double(points[v].z()));
-  };
+  auto xyz = [&](std::size_t v) { return GSM_mesh_optimization::internal::to_eigen(points[v]); };
   Boundary_alignment_statistics s;
   const std::size_t n = g.boundary_facets.size();
   s.facet_errors.resize(n);

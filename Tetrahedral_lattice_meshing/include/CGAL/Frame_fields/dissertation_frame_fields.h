@@ -49,9 +49,17 @@ Constant_frame_field_3<GeomTraits> constant_stretch_frame_field()
   return Constant_frame_field_3<GeomTraits>(Eigen::Vector3d(4, 1, 1).asDiagonal());
 }
 
-/// \ingroup PkgTetrahedralLatticeMeshingFrameFields
-/// the linear scale along x on \f$ [-1,1]^3 \f$, \f$ T = \mathrm{diag}(8x, 1, 1) \f$
-/// (Fig. 4.15c). Degenerate, so rejected, on the plane \f$ x = 0 \f$.
+/*!
+ * \ingroup PkgTetrahedralLatticeMeshingFrameFields
+ * the linear scale along x on \f$ [-1,1]^3 \f$, \f$ T = \mathrm{diag}(8x, 1, 1) \f$
+ * (Fig. 4.15c).
+ *
+ * \warning The field is degenerate on the plane \f$ x = 0 \f$, which cuts its own
+ * domain \f$ [-1,1]^3 \f$ in half: `T()` and `B()` **throw** `std::invalid_argument`
+ * at every point with \f$ x = 0 \f$ (and the frames near it are tiny, their inverses
+ * huge). Sample it only where \f$ x \neq 0 \f$, or use it on a domain that does not
+ * meet that plane; for \f$ x < 0 \f$ the first axis points along \f$ -x \f$.
+ */
 template <class GeomTraits>
 Closed_form_frame_field_3<GeomTraits> linear_scale_frame_field()
 {
@@ -60,10 +68,21 @@ Closed_form_frame_field_3<GeomTraits> linear_scale_frame_field()
   });
 }
 
-/// \ingroup PkgTetrahedralLatticeMeshingFrameFields
-/// the anisotropy along a single direction on \f$ [0.1, 1.1]^3 \f$ (Fig. 4.8, 4.15d):
-/// \f$ B = \mathrm{diag}((1.0125 - e^{-|x - 0.6|})^{-1}, 1, 1) \f$, so
-/// \f$ T = \mathrm{diag}(1.0125 - e^{-|x - 0.6|}, 1, 1) \f$.
+/*!
+ * \ingroup PkgTetrahedralLatticeMeshingFrameFields
+ * the anisotropy along a single direction on \f$ [0.1, 1.1]^3 \f$, as Fig. 4.8 gives it:
+ * \f$ B = \mathrm{diag}((1.0125 - e^{-|x - 0.6|})^{-1}, 1, 1) \f$, so
+ * \f$ T = \mathrm{diag}(1.0125 - e^{-|x - 0.6|}, 1, 1) \f$: the axis along x has length
+ * 0.0125 at \f$ x = 0.6 \f$ and grows to about 0.62 at the ends, the lattice is densest
+ * at \f$ x = 0.6 \f$.
+ *
+ * \note The text of Fig. 4.15d, the same experiment, gives instead
+ * \f$ T = \mathrm{diag}((1.0125 - e^{-|x - 0.6|})^{-1}, 1, 1) \f$, the inverse of this
+ * \f$ T \f$ (i.e. Fig. 4.8's \f$ B \f$ used as \f$ T \f$): axes 80 times longer at
+ * \f$ x = 0.6 \f$, the lattice sparsest there. This function follows Fig. 4.8; for the
+ * field as printed in Fig. 4.15d, swap the roles: use `B()` of this field as \f$ T \f$,
+ * e.g. `Closed_form_frame_field_3<GeomTraits>([f](const auto& p) { return f.B(p); })`.
+ */
 template <class GeomTraits>
 Closed_form_frame_field_3<GeomTraits> single_direction_anisotropy_frame_field()
 {

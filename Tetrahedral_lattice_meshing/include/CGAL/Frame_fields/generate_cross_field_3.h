@@ -23,6 +23,7 @@
 #include <iostream>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace CGAL {
@@ -33,6 +34,8 @@ namespace Frame_fields {
  * The output of `generate_cross_field_3()`: the field, one frame per vertex, and
  * what it was aligned with and where it is singular. Indices refer to
  * `field.points()`.
+ *
+ * \tparam GeomTraits the kernel of the mesh's points (a model of `Kernel`)
  */
 template <class GeomTraits>
 struct Generated_cross_field_3
@@ -52,6 +55,17 @@ struct Generated_cross_field_3
   std::size_t number_of_edges = 0;
   /// \f$ \sum_{edges\ ij} |c_i - c_j|^2 \f$ over the unit SH vectors \f$ c \f$ of the frames
   double smoothness_energy = 0;
+  /// the vertices on sharp edges where no axis could follow an edge (corners, ends of
+  /// feature curves, turns of more than 45 degrees): one axis follows the normal of their
+  /// largest group of nearly parallel boundary facets
+  std::size_t number_of_corner_vertices = 0;
+  /// the conjugate gradient iterations of the least-squares smoothness solve
+  int solver_iterations = 0;
+  /// the relative residual \f$ |Mx - b| / |b| \f$ of the accepted least-squares solution
+  double solver_error = 0;
+  /// `true` if the conjugate gradient did not converge and a sparse LDLT factorization
+  /// solved the system instead
+  bool direct_solver = false;
 };
 
 namespace internal {
@@ -71,10 +85,18 @@ generate_cross_field(const Indexed_tetrahedral_mesh<Point_3>& mesh, const NamedP
  * frames with one axis on the (area-weighted) normal, and the vertices of sharp edges
  * to frames with one axis on the edge; a sparse least-squares solve for smoothness
  * (\f$ \sum_{ij} |c_i - c_j|^2 \f$ over the mesh edges); the projection of each vertex
- * onto its nearest valid frame; then rounds of diffusion and projection. Corners
- * (where sharp edges meet or turn by more than 45 degrees) are left free.
+ * onto its nearest valid frame; then rounds of diffusion and projection. At corners
+ * (the vertices of sharp edges where the edges end, meet, or turn by more than 45
+ * degrees), where no single edge gives the axis, one axis follows the mean normal of
+ * the largest group (by area) of nearly parallel facets around the vertex.
  *
- * \tparam C3T3 `Mesh_complex_3_in_triangulation_3`
+ * The sharp edges are the edges in the complex; the named parameter
+ * `Frame_fields::parameters::features_angle` of the `Triangulation_3` overload does
+ * not apply here, and passing it is a compile-time error.
+ *
+ * \tparam Tr the triangulation of the complex (`Mesh_triangulation_3<...>::%type`)
+ * \tparam CornerIndex the corner index type of the complex
+ * \tparam CurveIndex the curve index type of the complex
  * \tparam NamedParameters a sequence of named parameters
  *
  * \cgalNamedParamsBegin
@@ -97,6 +119,8 @@ generate_cross_field(const Indexed_tetrahedral_mesh<Point_3>& mesh, const NamedP
  *
  * \throws std::invalid_argument if the complex has no cell or no facet, a vertex is not
  *   finite, or a parameter is out of range
+ * \throws std::runtime_error if the least-squares system cannot be solved (neither the
+ *   conjugate gradient nor the sparse LDLT factorization succeeds)
  */
 template <class Tr, class CornerIndex, class CurveIndex,
           class NamedParameters = CGAL::parameters::Default_named_parameters>
@@ -104,6 +128,10 @@ Generated_cross_field_3<typename Kernel_traits<typename Tr::Geom_traits::Point_3
 generate_cross_field_3(const Mesh_complex_3_in_triangulation_3<Tr, CornerIndex, CurveIndex>& c3t3,
                        const NamedParameters& np = CGAL::parameters::default_values())
 {
+  static_assert(std::is_same<std::decay_t<decltype(CGAL::parameters::get_parameter(np, internal_np::features_angle))>,
+                             CGAL::internal_np::Param_not_found>::value,
+                "generate_cross_field_3: features_angle applies to a Triangulation_3 only; the sharp "
+                "edges of a Mesh_complex_3_in_triangulation_3 are its edges in the complex");
   return internal::generate_cross_field(internal::indexed_mesh(c3t3, 0.), np);
 }
 
@@ -113,7 +141,14 @@ generate_cross_field_3(const Mesh_complex_3_in_triangulation_3<Tr, CornerIndex, 
  * its edges whose facet normals differ by more than `Frame_fields::parameters::features_angle`
  * (degrees, default 60; 0 for none) are sharp.
  *
- * \tparam Triangulation a `Triangulation_3` (`Delaunay_triangulation_3`, `Regular_triangulation_3`, ...)
+ * Any triangulation deriving from `Triangulation_3` (`Delaunay_triangulation_3`,
+ * `Regular_triangulation_3`, the triangulation of a `Mesh_complex_3_in_triangulation_3`, ...)
+ * is accepted through its base.
+ *
+ * \tparam GT the geometric traits of the triangulation
+ * \tparam TDS its triangulation data structure
+ * \tparam Lds its lock data structure
+ * \tparam NamedParameters a sequence of named parameters
  *
  * \cgalNamedParamsBegin
  *   \cgalParamNBegin{number_of_iterations}
@@ -138,7 +173,9 @@ generate_cross_field_3(const Mesh_complex_3_in_triangulation_3<Tr, CornerIndex, 
  *   \cgalParamNEnd
  * \cgalNamedParamsEnd
  *
- * \throws std::invalid_argument as above
+ * \throws std::invalid_argument if the triangulation has dimension less than 3, a vertex is
+ *   not finite, or a parameter is out of range
+ * \throws std::runtime_error as above
  */
 template <class GT, class TDS, class Lds,
           class NamedParameters = CGAL::parameters::Default_named_parameters>
@@ -175,7 +212,8 @@ generate_cross_field(const Indexed_tetrahedral_mesh<Point_3>& mesh, const NamedP
   Cross_field_solver solver(mesh.xyz, mesh.cells, mesh.boundary_facets, mesh.feature_edges);
   if(verbose)
     std::cerr << "generate_cross_field_3: " << mesh.points.size() << " vertices ("
-              << solver.number_of_constrained_vertices() << " constrained), " << mesh.cells.size()
+              << solver.number_of_constrained_vertices() << " constrained, "
+              << solver.number_of_corner_vertices() << " corners), " << mesh.cells.size()
               << " cells, " << mesh.boundary_facets.size() << " boundary facets, "
               << mesh.feature_edges.size() << " sharp edges\n";
   Cross_field_solution s = solver.solve(rounds, verbose);
@@ -190,6 +228,10 @@ generate_cross_field(const Indexed_tetrahedral_mesh<Point_3>& mesh, const NamedP
   out.number_of_interior_edges = s.singularities.number_of_interior_edges;
   out.number_of_edges = s.edges.size();
   out.smoothness_energy = s.smoothness_energy;
+  out.number_of_corner_vertices = solver.number_of_corner_vertices();
+  out.solver_iterations = s.solver_iterations;
+  out.solver_error = s.solver_error;
+  out.direct_solver = s.direct_solver;
   if(verbose)
     std::cerr << "generate_cross_field_3: " << out.singular_edges.size() << " singular edges of "
               << out.number_of_interior_edges << " interior edges, smoothness energy "

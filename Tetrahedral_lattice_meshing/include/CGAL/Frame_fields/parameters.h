@@ -12,6 +12,8 @@
 #ifndef CGAL_FRAME_FIELDS_PARAMETERS_H
 #define CGAL_FRAME_FIELDS_PARAMETERS_H
 
+#include <CGAL/GSM_mesh_optimization/internal/add_named_parameter.h>
+
 #include <CGAL/Named_function_parameters.h>
 
 namespace CGAL {
@@ -25,28 +27,11 @@ enum features_angle_t { features_angle };
 
 namespace parameters {
 
-#define CGAL_FRAME_FIELDS_ADD_NAMED_PARAMETER(NAME)                                              \
-  template <class T>                                                                             \
-  CGAL::Named_function_parameters<T, internal_np::NAME##_t> NAME(const T& t)                     \
-  {                                                                                              \
-    return CGAL::Named_function_parameters<T, internal_np::NAME##_t>(t);                         \
-  }                                                                                              \
-  template <class T, class NP_T, class NP_Tag, class NP_Base>                                    \
-  CGAL::Named_function_parameters<T, internal_np::NAME##_t,                                      \
-                                  CGAL::Named_function_parameters<NP_T, NP_Tag, NP_Base>>        \
-  NAME(const T& t, const CGAL::Named_function_parameters<NP_T, NP_Tag, NP_Base>& np)             \
-  {                                                                                              \
-    return CGAL::Named_function_parameters<T, internal_np::NAME##_t,                             \
-                                           CGAL::Named_function_parameters<NP_T, NP_Tag, NP_Base>>(t, np); \
-  }
-
 /// `double`: the length of the three axes of every generated frame (default 1)
-CGAL_FRAME_FIELDS_ADD_NAMED_PARAMETER(edge_length)
+CGAL_VVM_ADD_NAMED_PARAMETER(edge_length)
 /// `double`, degrees: on a `Triangulation_3`, the convex hull's edges whose two facet
 /// normals differ by more than this are sharp features (default 60; 0 for none)
-CGAL_FRAME_FIELDS_ADD_NAMED_PARAMETER(features_angle)
-
-#undef CGAL_FRAME_FIELDS_ADD_NAMED_PARAMETER
+CGAL_VVM_ADD_NAMED_PARAMETER(features_angle)
 
 } // namespace parameters
 } // namespace Frame_fields

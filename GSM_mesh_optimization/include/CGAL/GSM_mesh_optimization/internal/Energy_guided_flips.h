@@ -2,19 +2,22 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // GSM connectivity update (dissertation section 3.3.2): 2-3, 3-2 and 4-4 flips,
-// each applied when it lowers the mean energy of the cells in the complex
-// (sum_new - sum_old < (n_new - n_old) * mean), so that the mesh energy of
-// eq. 3.9 never increases and no sequence of flips can cycle.
+// edge removal and multi-face removal (Shewchuk 2002), and the peel of flat
+// boundary cells, each applied when it lowers the mean energy of the cells in
+// the complex (see Cell_replacement.h).
 //
 // Never across a surface facet, a feature edge or a subdomain boundary; only
 // cells of one subdomain are replaced, and the new cells get that subdomain and
 // the surface-patch data of the facets they border, with the complex's counters.
-// 2-3 and 3-2 are CGAL's own `Triangulation_3::flip()`; 4-4 is a 2-3 then a 3-2.
+// 3-2 is CGAL's own `Triangulation_3::flip()`; 4-4 is the edge removal of a
+// ring of four, 2-3 the multi-face removal of one face.
 
 #ifndef CGAL_GSM_MESH_OPTIMIZATION_INTERNAL_ENERGY_GUIDED_FLIPS_H
 #define CGAL_GSM_MESH_OPTIMIZATION_INTERNAL_ENERGY_GUIDED_FLIPS_H
 
-#include <CGAL/GSM_mesh_optimization/internal/Mesh_energy.h>
+#include <CGAL/GSM_mesh_optimization/internal/Cell_replacement.h>
+#include <CGAL/GSM_mesh_optimization/internal/Edge_removal.h>
+#include <CGAL/GSM_mesh_optimization/internal/Multi_face_removal.h>
 
 #include <algorithm>
 #include <array>
@@ -25,61 +28,92 @@ namespace CGAL {
 namespace GSM_mesh_optimization {
 namespace internal {
 
-/// counts of the flips done
+/// counts of the flips done; an edge removal of a ring of four counts as a 4-4
+/// flip, a multi-face removal of one (two) faces as a 2-3 (4-4) flip
 struct Flip_counts
 {
   std::size_t flips_2_3 = 0, flips_3_2 = 0, flips_4_4 = 0, boundary_peels = 0;
-  std::size_t total() const { return flips_2_3 + flips_3_2 + flips_4_4 + boundary_peels; }
+  std::size_t edge_removals = 0;       ///< rings of 5 or more
+  std::size_t multi_face_removals = 0; ///< 3 faces or more
+  std::size_t total() const
+  {
+    return flips_2_3 + flips_3_2 + flips_4_4 + boundary_peels + edge_removals + multi_face_removals;
+  }
 };
 
 template <class C3T3>
-class Energy_guided_flips
+class Energy_guided_flips : public Cell_replacement<C3T3>
 {
+  typedef Cell_replacement<C3T3> Base;
+
 public:
-  typedef typename C3T3::Triangulation Tr;
-  typedef typename Tr::Vertex_handle Vertex_handle;
-  typedef typename Tr::Cell_handle Cell_handle;
-  typedef typename Tr::Facet Facet;
-  typedef typename Tr::Edge Edge;
-  typedef typename C3T3::Subdomain_index Subdomain_index;
-  typedef typename C3T3::Surface_patch_index Surface_patch_index;
-  typedef Mesh_energy<C3T3> Energy;
+  typedef typename Base::Tr Tr;
+  typedef typename Base::Vertex_handle Vertex_handle;
+  typedef typename Base::Cell_handle Cell_handle;
+  typedef typename Base::Facet Facet;
+  typedef typename Base::Edge Edge;
+  typedef typename Base::Subdomain_index Subdomain_index;
+  typedef typename Base::Surface_patch_index Surface_patch_index;
+  typedef typename Base::Energy Energy;
+
+  /// the largest ring of an edge removal, and of the new edge of a multi-face removal
+  static constexpr int max_ring = 7;
+  /// flips are tried around the cells whose energy exceeds this times the mean
+  static constexpr double candidate_factor = 1.2;
 
   /// `sum` and `count`: the running total of the energies of the cells in the complex
   Energy_guided_flips(C3T3& c3t3, const Energy& energy, double& sum, std::size_t& count)
-    : c3t3_(c3t3), tr_(c3t3.triangulation()), energy_(energy), sum_(sum), count_(count)
+    : Base(c3t3, energy, sum, count), edge_removal_(c3t3, energy, sum, count),
+      face_removal_(c3t3, energy, sum, count)
   {}
 
-  /// one pass over the edges (3-2, 4-4) then the facets (2-3) of the complex
+  /// one pass over the edges (3-2, edge removal) then the facets (multi-face
+  /// removal) of the complex, then the flat boundary cells
   Flip_counts flip_pass()
   {
     Flip_counts done;
     // Handles go stale as cells are replaced: collect vertex tuples, re-find each.
-    std::set<std::array<Vertex_handle, 2>> edges;
-    std::set<std::array<Vertex_handle, 3>> facets;
+    // Only around cells worse than the mean: replacing cells that are all better
+    // than the mean seldom lowers it, and checking them all is most of the cost.
+    std::vector<std::array<Vertex_handle, 2>> edges;
+    std::vector<std::array<Vertex_handle, 3>> facets;
+    const double threshold = candidate_factor * this->mean();
     for(auto c = c3t3_.cells_in_complex_begin(); c != c3t3_.cells_in_complex_end(); ++c) {
+      if(!(energy_.cell(c) > threshold)) continue;
       for(int i = 0; i < 4; ++i) {
-        for(int j = i + 1; j < 4; ++j) edges.insert(sorted(std::array<Vertex_handle, 2>{{c->vertex(i), c->vertex(j)}}));
+        for(int j = i + 1; j < 4; ++j) edges.push_back(sorted(std::array<Vertex_handle, 2>{{c->vertex(i), c->vertex(j)}}));
         if(!c3t3_.is_in_complex(c, i))
-          facets.insert(sorted(std::array<Vertex_handle, 3>{
+          facets.push_back(sorted(std::array<Vertex_handle, 3>{
               {c->vertex((i + 1) & 3), c->vertex((i + 2) & 3), c->vertex((i + 3) & 3)}}));
       }
     }
+    std::sort(edges.begin(), edges.end());
+    edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+    std::sort(facets.begin(), facets.end());
+    facets.erase(std::unique(facets.begin(), facets.end()), facets.end());
     for(const auto& e : edges) {
       Cell_handle c;
       int i, j;
       if(!tr_.is_edge(e[0], e[1], c, i, j)) continue;
-      const std::size_t m = edge_degree(Edge(c, i, j));
-      if(m == 3 && try_flip_3_2(Edge(c, i, j))) ++done.flips_3_2;
-      else if(m == 4 && try_flip_4_4(Edge(c, i, j))) ++done.flips_4_4;
+      const std::size_t m = this->edge_degree(Edge(c, i, j), max_ring + 1);
+      if(m == 3) {
+        if(try_flip_3_2(Edge(c, i, j))) ++done.flips_3_2;
+      } else if(m <= std::size_t(max_ring) && try_remove_edge(Edge(c, i, j)))
+        ++(m == 4 ? done.flips_4_4 : done.edge_removals);
     }
     for(const auto& f : facets) {
       Cell_handle c;
       int i, j, k;
       if(!tr_.is_facet(f[0], f[1], f[2], c, i, j, k)) continue;
-      if(try_flip_2_3(Facet(c, 6 - i - j - k))) ++done.flips_2_3;
+      switch(face_removal_.try_remove_faces(Facet(c, 6 - i - j - k), max_ring - 2, true)) {
+      case 0: break;
+      case 1: ++done.flips_2_3; break;
+      case 2: ++done.flips_4_4; break;
+      default: ++done.multi_face_removals;
+      }
     }
     // flat cells lying on the surface: no flip and no move can give them volume
+    if(boundary_fixed_) return done;
     std::vector<std::array<Vertex_handle, 4>> flat_boundary_cells;
     for(auto c = c3t3_.cells_in_complex_begin(); c != c3t3_.cells_in_complex_end(); ++c) {
       int surface_facets = 0;
@@ -101,6 +135,19 @@ public:
   /// triangulation that moves the surface by less than the cell's small height),
   /// if that lowers the mean energy
   bool try_peel_boundary_cell(const Cell_handle& c)
+  {
+    if constexpr(Is_triangulation_complex<C3T3>::value) {
+      CGAL_USE(c);
+      return false; // a bare triangulation's boundary is its convex hull: fixed
+    } else
+      return peel_boundary_cell(c);
+  }
+
+  /// keeps the surface where it is: no boundary peel
+  void set_boundary_fixed(bool fixed) { boundary_fixed_ = fixed; }
+
+private:
+  bool peel_boundary_cell(const Cell_handle& c)
   {
     int in[2], out[2], n_in = 0, n_out = 0;
     for(int i = 0; i < 4; ++i) {
@@ -130,7 +177,7 @@ public:
     // flat: the surface moves by the height of the cell, small next to its edges
     if(!is_flat(c)) return false;
     const double e = energy_.cell(c);
-    if(!(-e < -mean())) return false;
+    if(!lowers_mean(e, 0., -1)) return false;
 
     c3t3_.remove_from_complex(Facet(c, in[0]));
     c3t3_.remove_from_complex(Facet(c, in[1]));
@@ -147,33 +194,11 @@ public:
     return true;
   }
 
-  double mean() const { return count_ > 0 ? sum_ / double(count_) : 0.; }
-
+public:
   // --- the flips; each returns true if done --------------------------------
 
   /// 2-3 flip of the facet `f`, if it lowers the mean energy
-  bool try_flip_2_3(const Facet& f)
-  {
-    const Cell_handle c = f.first, n = c->neighbor(f.second);
-    Subdomain_index s;
-    if(!same_subdomain({c, n}, s) || c3t3_.is_in_complex(f)) return false;
-    const Vertex_handle p = c->vertex(f.second), q = n->vertex(n->index(c));
-    std::array<Vertex_handle, 3> abc;
-    for(int k = 0; k < 3; ++k) abc[k] = c->vertex((f.second + 1 + k) & 3);
-    const double old_sum = energy_.cell(c) + energy_.cell(n);
-    double new_sum = 0;
-    for(int k = 0; k < 3; ++k) new_sum += tet_energy(p, q, abc[k], abc[(k + 1) % 3]);
-    if(!(new_sum - old_sum < mean())) return false;
-
-    release({c, n});
-    if(!tr_.flip(c, f.second)) {
-      claim({c, n}, s);
-      return false;
-    }
-    claim(cells_around(p, q), s);
-    account(old_sum, new_sum, +1);
-    return true;
-  }
+  bool try_flip_2_3(const Facet& f) { return try_remove_faces(f, 1) == 1; }
 
   /// 3-2 flip of the edge `e` (three incident cells), if it lowers the mean energy
   bool try_flip_3_2(const Edge& e)
@@ -187,7 +212,7 @@ public:
     for(const Cell_handle& c : ring) old_sum += energy_.cell(c);
     const double new_sum = tet_energy(a, others[0], others[1], others[2]) +
                            tet_energy(b, others[0], others[1], others[2]);
-    if(!(new_sum - old_sum < -mean())) return false;
+    if(!lowers_mean(old_sum, new_sum, -1)) return false;
 
     release(ring);
     if(!tr_.flip(e)) {
@@ -201,69 +226,18 @@ public:
 
   /// 4-4 flip of the edge `e` (four incident cells) to the better of the two
   /// other diagonals of its ring, if it lowers the mean energy
-  bool try_flip_4_4(const Edge& e)
-  {
-    std::vector<Cell_handle> ring;
-    std::vector<Vertex_handle> r; // ring vertices in circular order
-    Subdomain_index s;
-    if(!removable_edge(e, ring, r, s) || ring.size() != 4) return false;
-    const Vertex_handle a = e.first->vertex(e.second), b = e.first->vertex(e.third);
-    double old_sum = 0;
-    for(const Cell_handle& c : ring) old_sum += energy_.cell(c);
-    // the diagonal (r[k], r[k+2]) splits the ring into (r[k], r[k+1], r[k+2]) and (r[k+2], r[k+3], r[k])
-    double best = old_sum;
-    int best_k = -1;
-    for(int k = 0; k < 2; ++k) {
-      const Vertex_handle d0 = r[k], d1 = r[k + 2], m0 = r[k + 1], m1 = r[(k + 3) % 4];
-      const double sum = tet_energy(a, d0, m0, d1) + tet_energy(b, d0, m0, d1) +
-                         tet_energy(a, d0, m1, d1) + tet_energy(b, d0, m1, d1);
-      if(sum < best) {
-        best = sum;
-        best_k = k;
-      }
-    }
-    if(best_k < 0) return false;
+  bool try_flip_4_4(const Edge& e) { return this->edge_degree(e, 5) == 4 && try_remove_edge(e); }
 
-    // a 2-3 flip of the facet (a, b, m) makes the diagonal (r[k], r[k+2]), for the
-    // m of r[k+1], r[k+3] whose triangle with (a, b) the diagonal crosses;
-    // then the edge (a, b) has three cells and a 3-2 flip removes it
-    const Vertex_handle d0 = r[best_k], d1 = r[best_k + 2];
-    release(ring);
-    bool first_flip = false;
-    for(const Vertex_handle& m : {r[best_k + 1], r[(best_k + 3) % 4]}) {
-      Cell_handle c;
-      int i, j, k;
-      if(tr_.is_facet(a, b, m, c, i, j, k) && tr_.flip(c, 6 - i - j - k)) {
-        first_flip = true;
-        break;
-      }
-    }
-    if(!first_flip) {
-      claim(ring, s);
-      return false;
-    }
-    Cell_handle ec;
-    int ei, ej;
-    const bool has_edge = tr_.is_edge(a, b, ec, ei, ej);
-    if(!has_edge || !tr_.flip(Edge(ec, ei, ej))) {
-      // not convex for the second half: undo the first (3-2 around the new diagonal)
-      Cell_handle uc;
-      int ui, uj;
-      if(tr_.is_edge(d0, d1, uc, ui, uj)) tr_.flip(Edge(uc, ui, uj));
-      claim(cells_around(a, b), s);
-      return false;
-    }
-    claim(cells_around(d0, d1), s);
-    account(old_sum, best, 0);
-    return true;
+  /// edge removal of `e`, with 4 to `max_ring` cells around it
+  bool try_remove_edge(const Edge& e) { return edge_removal_.try_remove_edge(e, max_ring); }
+
+  /// multi-face removal from `f` on, of at most `max_faces` faces; returns how many
+  int try_remove_faces(const Facet& f, int max_faces = max_ring - 2)
+  {
+    return face_removal_.try_remove_faces(f, max_faces);
   }
 
 private:
-  typename Tr::Geom_traits::Point_3 bare(const Vertex_handle& v) const
-  {
-    return tr_.geom_traits().construct_point_3_object()(tr_.point(v));
-  }
-
   // height of the cell over its largest facet below 5% of its longest edge
   bool is_flat(const Cell_handle& c) const
   {
@@ -280,7 +254,6 @@ private:
     return height < 0.05 * max_edge;
   }
 
-
   template <std::size_t N>
   static std::array<Vertex_handle, N> sorted(std::array<Vertex_handle, N> a)
   {
@@ -288,137 +261,21 @@ private:
     return a;
   }
 
-  double tet_energy(const Vertex_handle& a, const Vertex_handle& b, const Vertex_handle& c,
-                    const Vertex_handle& d) const
-  {
-    return energy_.tetrahedron(energy_.position(a), energy_.position(b), energy_.position(c),
-                               energy_.position(d));
-  }
+  using Base::c3t3_;
+  using Base::tr_;
+  using Base::energy_;
+  using Base::lowers_mean;
+  using Base::bare;
+  using Base::tet_energy;
+  using Base::removable_edge;
+  using Base::cells_on;
+  using Base::release;
+  using Base::claim;
+  using Base::account;
 
-  std::size_t edge_degree(const Edge& e) const
-  {
-    std::size_t m = 0;
-    auto cc = tr_.incident_cells(e), done = cc;
-    do {
-      ++m;
-    } while(++cc != done && m < 6);
-    return m;
-  }
-
-  // all given cells are finite, in the complex, and of one subdomain `s`
-  bool same_subdomain(std::initializer_list<Cell_handle> cells, Subdomain_index& s) const
-  {
-    bool first = true;
-    for(const Cell_handle& c : cells) {
-      if(tr_.is_infinite(c) || !c3t3_.is_in_complex(c)) return false;
-      if(first) s = c3t3_.subdomain_index(c);
-      else if(!(c3t3_.subdomain_index(c) == s)) return false;
-      first = false;
-    }
-    return true;
-  }
-
-  // the cells around `e` (in circular order), their ring vertices, and their common
-  // subdomain; false if `e` is a feature edge, touches a surface facet or another subdomain
-  bool removable_edge(const Edge& e, std::vector<Cell_handle>& ring, std::vector<Vertex_handle>& others,
-                      Subdomain_index& s) const
-  {
-    const Vertex_handle a = e.first->vertex(e.second), b = e.first->vertex(e.third);
-    if(c3t3_.is_in_complex(a, b)) return false;
-    auto cc = tr_.incident_cells(e), done = cc;
-    bool first = true;
-    do {
-      const Cell_handle c = cc;
-      if(tr_.is_infinite(c) || !c3t3_.is_in_complex(c)) return false;
-      if(first) s = c3t3_.subdomain_index(c);
-      else if(!(c3t3_.subdomain_index(c) == s)) return false;
-      first = false;
-      // the facets of c that contain the edge must not be in the complex
-      const int ia = c->index(a), ib = c->index(b);
-      for(int i = 0; i < 4; ++i)
-        if(i != ia && i != ib && c3t3_.is_in_complex(c, i)) return false;
-      ring.push_back(c);
-      if(ring.size() > 8) return false;
-    } while(++cc != done);
-    // ring vertices in circular order: consecutive cells share one of them
-    for(std::size_t k = 0; k < ring.size(); ++k) {
-      const Cell_handle c = ring[k], next = ring[(k + 1) % ring.size()];
-      for(int i = 0; i < 4; ++i) {
-        const Vertex_handle v = c->vertex(i);
-        if(v != a && v != b && next->has_vertex(v)) {
-          others.push_back(v);
-          break;
-        }
-      }
-    }
-    return others.size() == ring.size();
-  }
-
-  std::vector<Cell_handle> cells_around(const Vertex_handle& u, const Vertex_handle& w) const
-  {
-    std::vector<Cell_handle> cells;
-    Cell_handle c;
-    int i, j;
-    if(!tr_.is_edge(u, w, c, i, j)) return cells;
-    auto cc = tr_.incident_cells(Edge(c, i, j)), done = cc;
-    do cells.push_back(cc);
-    while(++cc != done);
-    return cells;
-  }
-
-  std::vector<Cell_handle> cells_on(const Vertex_handle& u, const Vertex_handle& v,
-                                    const Vertex_handle& w) const
-  {
-    Cell_handle c;
-    int i, j, k;
-    if(!tr_.is_facet(u, v, w, c, i, j, k)) return {};
-    return {c, c->neighbor(6 - i - j - k)};
-  }
-
-  // takes cells out of the complex before a flip reuses them
-  void release(const std::vector<Cell_handle>& cells)
-  {
-    for(const Cell_handle& c : cells) c3t3_.remove_from_complex(c);
-  }
-  void release(std::initializer_list<Cell_handle> cells) { release(std::vector<Cell_handle>(cells)); }
-
-  // puts (new) cells into subdomain `s` and gives each of their facets the surface
-  // data of its mirror facet: a flip reuses cells, whose old facet data are stale.
-  // Facets between two of the new cells are inside the flipped region: never surface.
-  void claim(const std::vector<Cell_handle>& cells, const Subdomain_index& s)
-  {
-    for(const Cell_handle& c : cells) {
-      c3t3_.add_to_complex(c, s);
-      for(int i = 0; i < 4; ++i) c->set_surface_patch_index(i, Surface_patch_index());
-    }
-    for(const Cell_handle& c : cells)
-      for(int i = 0; i < 4; ++i) {
-        const Cell_handle n = c->neighbor(i);
-        if(std::find(cells.begin(), cells.end(), n) != cells.end()) continue;
-        const int in = n->index(c);
-        if(n->is_facet_on_surface(in)) {
-          c->set_surface_patch_index(i, n->surface_patch_index(in));
-          c->set_facet_surface_center(i, n->get_facet_surface_center(in));
-          c->set_facet_surface_center_index(i, n->get_facet_surface_center_index(in));
-        }
-      }
-  }
-  void claim(std::initializer_list<Cell_handle> cells, const Subdomain_index& s)
-  {
-    claim(std::vector<Cell_handle>(cells), s);
-  }
-
-  void account(double old_sum, double new_sum, int cell_difference)
-  {
-    sum_ += new_sum - old_sum;
-    count_ = std::size_t(std::ptrdiff_t(count_) + cell_difference);
-  }
-
-  C3T3& c3t3_;
-  Tr& tr_;
-  const Energy& energy_;
-  double& sum_;
-  std::size_t& count_;
+  Edge_removal<C3T3> edge_removal_;
+  Multi_face_removal<C3T3> face_removal_;
+  bool boundary_fixed_ = false;
 };
 
 } // namespace internal

@@ -16,9 +16,13 @@
 #include <CGAL/Mesh_optimization_return_code.h>
 #include <CGAL/Real_timer.h>
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <functional>
 #include <iostream>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -76,6 +80,7 @@ public:
     double sum = total.first;
     std::size_t count = total.second;
     Energy_guided_flips<C3T3> flips(c3t3_, energy_, sum, count);
+    flips.set_boundary_fixed(options_.freeze_boundary);
     double previous_mean = sum / double(count);
     if(options_.verbose)
       std::cerr << "GSM: " << count << " cells, mean energy " << previous_mean << "\n";
@@ -83,7 +88,9 @@ public:
     for(int round = 1; round <= options_.max_rounds; ++round) {
       Round_report report;
       report.round = round;
+      const double smoothing_start = timer.time();
       report.number_of_moves = smoothing_pass(sum, timer);
+      const double flips_start = timer.time();
       if(options_.do_flip && !time_is_up(timer))
         for(int pass = 0; pass < max_flip_passes; ++pass) {
           const std::size_t n = flips.flip_pass().total();
@@ -101,7 +108,9 @@ public:
       if(options_.verbose)
         std::cerr << "GSM round " << round << ": mean energy " << report.energy << ", min dihedral "
                   << report.min_dihedral_angle << ", " << report.number_of_moves << " moves, "
-                  << report.number_of_flips << " flips, " << report.elapsed_time << " s\n";
+                  << report.number_of_flips << " flips, " << report.elapsed_time << " s (smoothing "
+                  << flips_start - smoothing_start << " s, flips " << report.elapsed_time - flips_start
+                  << " s)\n";
       if(options_.visitor) options_.visitor(report);
 
       if(time_is_up(timer)) return TIME_LIMIT_REACHED;
@@ -121,30 +130,122 @@ private:
     return options_.time_limit > 0 && timer.time() >= options_.time_limit;
   }
 
-  // every movable vertex once, those with the largest Newton step first
+  // Every movable vertex once, those with the largest Newton step first. The
+  // vertices go in batches that TBB smooths in parallel: a batch takes, in that
+  // order, each vertex that no vertex already in it reads or writes (a move
+  // reads the one-ring, plus the hull vertices across the vertex's hull edges).
   std::size_t smoothing_pass(double& sum, const CGAL::Real_timer& timer)
   {
-    std::vector<std::pair<double, Vertex_handle>> order;
-    Ring ring;
-    for(Vertex_handle v : c3t3_.triangulation().finite_vertex_handles()) {
-      if(!smoother_.is_movable(v) || !smoother_.make_ring(v, ring)) continue;
-      bool is_descent;
-      const double step = smoother_.newton_step(ring, is_descent).norm();
-      if(step > min_relative_step * ring.max_neighbor_distance) order.emplace_back(step, v);
-    }
-    std::sort(order.begin(), order.end(),
-              [](const auto& a, const auto& b) { return a.first > b.first; });
-    std::size_t moves = 0;
-    for(std::size_t k = 0; k < order.size(); ++k) {
-      if((k & 255) == 0 && time_is_up(timer)) break;
-      if(!smoother_.make_ring(order[k].second, ring)) continue;
-      if(smoother_.smooth(ring)) {
-        ++moves;
-        sum += smoother_.last_energy_change();
+    Stars stars(c3t3_.triangulation());
+    const std::size_t n = stars.vertices.size();
+    std::vector<double> step(n, 0.);
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n), [&](const tbb::blocked_range<std::size_t>& range) {
+      Ring ring;
+      for(std::size_t i = range.begin(); i != range.end(); ++i) {
+        const Vertex_handle v = stars.vertices[i];
+        if(!smoother_.is_movable(v) || !smoother_.make_ring(v, stars.cells[i], ring)) continue;
+        bool is_descent;
+        const double norm = smoother_.newton_step(ring, is_descent).norm();
+        if(norm > min_relative_step * ring.max_neighbor_distance) step[i] = norm;
       }
+    });
+    std::vector<std::size_t> pending;
+    for(std::size_t i = 0; i < n; ++i)
+      if(step[i] > 0) pending.push_back(i);
+    std::stable_sort(pending.begin(), pending.end(),
+                     [&](std::size_t a, std::size_t b) { return step[a] > step[b]; });
+
+    // what each move reads, once: the batches below scan the deferred vertices again and again
+    std::vector<std::vector<std::size_t>> reads(n);
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, pending.size()),
+                      [&](const tbb::blocked_range<std::size_t>& range) {
+      for(std::size_t k = range.begin(); k != range.end(); ++k) stars.reads(pending[k], reads[pending[k]]);
+    });
+
+    std::vector<unsigned> written(n, 0), read(n, 0);
+    std::vector<std::size_t> batch, deferred;
+    std::vector<char> moved;
+    std::vector<double> change;
+    std::size_t moves = 0;
+    for(unsigned stamp = 1; !pending.empty() && !time_is_up(timer); ++stamp) {
+      batch.clear();
+      deferred.clear();
+      for(std::size_t i : pending) {
+        bool independent = read[i] != stamp;
+        for(std::size_t j : reads[i]) independent = independent && written[j] != stamp;
+        if(!independent) {
+          deferred.push_back(i);
+          continue;
+        }
+        batch.push_back(i);
+        written[i] = stamp;
+        for(std::size_t j : reads[i]) read[j] = stamp;
+      }
+      moved.assign(batch.size(), 0);
+      change.assign(batch.size(), 0.);
+      tbb::parallel_for(tbb::blocked_range<std::size_t>(0, batch.size(), 16),
+                        [&](const tbb::blocked_range<std::size_t>& range) {
+        Ring ring;
+        for(std::size_t k = range.begin(); k != range.end(); ++k) {
+          const std::size_t i = batch[k];
+          if(smoother_.make_ring(stars.vertices[i], stars.cells[i], ring))
+            moved[k] = smoother_.smooth(ring, change[k]);
+        }
+      });
+      for(std::size_t k = 0; k < batch.size(); ++k)
+        if(moved[k]) {
+          ++moves;
+          sum += change[k];
+        }
+      pending.swap(deferred);
     }
     return moves;
   }
+
+  // The cells around each finite vertex, gathered in one pass over the cells:
+  // the triangulation's own incident_cells() marks cells and cannot run in parallel.
+  struct Stars
+  {
+    std::vector<Vertex_handle> vertices;
+    std::vector<std::vector<typename Tr::Cell_handle>> cells;
+    std::unordered_map<Vertex_handle, std::size_t> index;
+    const Tr& tr;
+
+    explicit Stars(const Tr& t) : tr(t)
+    {
+      vertices.reserve(tr.number_of_vertices());
+      index.reserve(tr.number_of_vertices());
+      for(Vertex_handle v : tr.finite_vertex_handles()) {
+        index.emplace(v, vertices.size());
+        vertices.push_back(v);
+      }
+      cells.resize(vertices.size());
+      for(auto c : tr.all_cell_handles())
+        for(int i = 0; i < 4; ++i)
+          if(!tr.is_infinite(c->vertex(i))) cells[index.find(c->vertex(i))->second].push_back(c);
+    }
+
+    // the vertices a move of vertex i reads: its one-ring, and on the convex
+    // hull the vertices across its hull edges (the convexity check)
+    void reads(std::size_t i, std::vector<std::size_t>& out) const
+    {
+      out.clear();
+      for(const auto& c : cells[i]) {
+        const bool infinite = tr.is_infinite(c);
+        for(int k = 0; k < 4; ++k) {
+          const Vertex_handle w = c->vertex(k);
+          if(!tr.is_infinite(w)) out.push_back(index.find(w)->second);
+          if(infinite && k != c->index(tr.infinite_vertex())) {
+            const auto nb = c->neighbor(k);
+            const Vertex_handle d = nb->vertex(nb->index(c));
+            if(!tr.is_infinite(d)) out.push_back(index.find(d)->second);
+          }
+        }
+      }
+      std::sort(out.begin(), out.end());
+      out.erase(std::unique(out.begin(), out.end()), out.end());
+    }
+  };
 
   static constexpr double min_relative_step = 1e-4;
 

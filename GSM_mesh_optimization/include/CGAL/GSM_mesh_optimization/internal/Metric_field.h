@@ -59,7 +59,21 @@ public:
   }
 
   bool is_constant() const { return !B_; }
-  Eigen::Matrix3d operator()(const Eigen::Vector3d& x) const { return B_ ? B_(x) : constant_B_; }
+  Eigen::Matrix3d operator()(const Eigen::Vector3d& x) const
+  {
+    return B_ ? Eigen::Matrix3d(scale_ * B_(x)) : constant_B_;
+  }
+
+  /// the same field with target edges `factor` times shorter
+  Metric_field scaled(double factor) const
+  {
+    if(!(factor > 0) || !std::isfinite(factor))
+      throw std::invalid_argument("GSM: the metric cannot be scaled to the mesh (degenerate mesh or field)");
+    Metric_field m = *this;
+    m.constant_B_ *= factor;
+    m.scale_ *= factor;
+    return m;
+  }
 
   /// M^{1/2} of a symmetric positive definite M; anything else is an error
   static Eigen::Matrix3d square_root(const Eigen::Matrix3d& M, const Eigen::Vector3d& x)
@@ -67,7 +81,7 @@ public:
     const bool finite = M.allFinite();
     const bool symmetric = finite && (M - M.transpose()).norm() <= 1e-9 * M.norm();
     Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig;
-    if(symmetric) eig.compute(M);
+    if(symmetric) eig.computeDirect(M); // closed form: this runs for every energy evaluation
     if(!symmetric || eig.info() != Eigen::Success || !(eig.eigenvalues().minCoeff() > 0)) {
       std::ostringstream os;
       os << "GSM: the metric at (" << x.transpose()
@@ -80,6 +94,7 @@ public:
 
 private:
   Eigen::Matrix3d constant_B_ = Eigen::Matrix3d::Identity();
+  double scale_ = 1;
   std::function<Eigen::Matrix3d(const Eigen::Vector3d&)> B_;
 };
 

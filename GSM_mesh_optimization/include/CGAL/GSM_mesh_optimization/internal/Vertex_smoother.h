@@ -8,6 +8,10 @@
 // one-ring energy decreases. Surface vertices move in their tangent plane and
 // are projected back onto the domain's surface, on their own patch; feature
 // curve vertices move along their curve; corners never move.
+//
+// Rings are built from a given star (the cells around the vertex) and a move
+// reads and writes only the ring, without the triangulation's traversal flags,
+// so vertices that are not neighbors can be smoothed in parallel.
 
 #ifndef CGAL_GSM_MESH_OPTIMIZATION_INTERNAL_VERTEX_SMOOTHER_H
 #define CGAL_GSM_MESH_OPTIMIZATION_INTERNAL_VERTEX_SMOOTHER_H
@@ -68,26 +72,29 @@ public:
   /// lowest vertex dimension that may move (3: interior only)
   int lowest_movable_dimension() const
   {
-    if(freeze_boundary_ || domain_ == nullptr) return 3;
-    return Mesh_3::internal::Has_features<MeshDomain>::value ? 1 : 2;
+    if constexpr(std::is_void<MeshDomain>::value)
+      return 3; // a bare triangulation: its boundary is fixed
+    else {
+      if(freeze_boundary_ || domain_ == nullptr) return 3;
+      return Mesh_3::internal::Has_features<MeshDomain>::value ? 1 : 2;
+    }
   }
 
   bool is_movable(const Vertex_handle& v) const
   {
-    return !tr_.is_infinite(v) && v->in_dimension() >= lowest_movable_dimension() &&
-           v->in_dimension() <= 3;
+    return !tr_.is_infinite(v) && c3t3_.in_dimension(v) >= lowest_movable_dimension() &&
+           c3t3_.in_dimension(v) <= 3;
   }
 
-  /// collects the one-ring of `v`; false if it has no cell in the complex
-  bool make_ring(const Vertex_handle& v, Ring& r) const
+  /// the one-ring of `v` from its `star` (all cells incident to `v`, infinite
+  /// ones included); false if it has no cell in the complex or no frame
+  bool make_ring(const Vertex_handle& v, const std::vector<Cell_handle>& star, Ring& r) const
   {
     r = Ring();
     r.v = v;
-    r.dimension = v->in_dimension();
-    std::vector<Cell_handle> cells;
-    tr_.incident_cells(v, std::back_inserter(cells));
+    r.dimension = c3t3_.in_dimension(v);
     const Eigen::Vector3d x = energy_.position(v);
-    for(const Cell_handle& c : cells) {
+    for(const Cell_handle& c : star) {
       if(tr_.is_infinite(c)) {
         r.infinite_cells.push_back(c);
         continue;
@@ -102,6 +109,14 @@ public:
     if(r.dimension == 2) return surface_frame(r);
     if(r.dimension == 1) return curve_frame(r);
     return true;
+  }
+
+  /// the same, collecting the star with the triangulation (not thread-safe)
+  bool make_ring(const Vertex_handle& v, Ring& r) const
+  {
+    std::vector<Cell_handle> star;
+    tr_.incident_cells(v, std::back_inserter(star));
+    return make_ring(v, star, r);
   }
 
   /// sum of the energies of the complex cells of the ring with `v` at `x`
@@ -158,8 +173,8 @@ public:
     return step;
   }
 
-  /// tries to move the vertex of `r`; true if it moved
-  bool smooth(const Ring& r)
+  /// tries to move the vertex of `r`; true if it moved, with the change of the ring energy
+  bool smooth(const Ring& r, double& energy_change) const
   {
     bool is_descent;
     const Eigen::Vector3d step = newton_step(r, is_descent);
@@ -178,15 +193,13 @@ public:
         const double e = ring_energy(r, x);
         if(e < e0 - tiny) {
           move(r.v, p);
-          last_energy_change_ = e - e0;
+          energy_change = e - e0;
           return true;
         }
       }
     }
     return false;
   }
-
-  double last_energy_change() const { return last_energy_change_; }
 
   /// no finite incident cell inverts, and the convex hull stays convex around `v`
   bool is_valid_position(const Ring& r, const Bare_point& p) const
@@ -229,9 +242,12 @@ private:
     return tr_.geom_traits().construct_point_3_object()(tr_.point(v));
   }
 
-  void move(const Vertex_handle& v, const Bare_point& p)
+  void move(const Vertex_handle& v, const Bare_point& p) const
   {
-    v->set_point(Weighted_point(p, tr_.point(v).weight()));
+    if constexpr(std::is_same<Weighted_point, Bare_point>::value)
+      v->set_point(p);
+    else
+      v->set_point(Weighted_point(p, tr_.point(v).weight()));
   }
 
   // the point the vertex of `r` would take for the unconstrained target `x`
@@ -239,8 +255,12 @@ private:
   {
     p = Bare_point(x[0], x[1], x[2]);
     if(r.dimension == 3) return true;
-    if(r.dimension == 2) return project_on_surface(r, p);
-    return project_on_curve(r, p);
+    if constexpr(std::is_void<MeshDomain>::value)
+      return false;
+    else {
+      if(r.dimension == 2) return project_on_surface(r, p);
+      return project_on_curve(r, p);
+    }
   }
 
   // --- surface vertices -------------------------------------------------------
@@ -249,27 +269,31 @@ private:
   // oriented from the cell of larger subdomain index
   bool surface_frame(Ring& r) const
   {
-    std::vector<Facet> facets;
-    c3t3_.triangulation().finite_incident_facets(r.v, std::back_inserter(facets));
     bool has_patch = false;
-    for(const Facet& f : facets) {
-      if(!c3t3_.is_in_complex(f)) continue;
-      const Surface_patch_index patch = c3t3_.surface_patch_index(f);
-      if(!has_patch) {
-        r.patch = patch;
-        has_patch = true;
-      } else if(!(patch == r.patch))
-        return false; // on two patches: it sits on a feature the domain did not protect
-      Facet g = f;
-      const Facet m = tr_.mirror_facet(f);
-      if(!tr_.is_infinite(m.first) && c3t3_.subdomain_index(m.first) > c3t3_.subdomain_index(f.first)) g = m;
-      const Eigen::Vector3d a = energy_.position(g.first->vertex((g.second + 1) & 3));
-      const Eigen::Vector3d b = energy_.position(g.first->vertex((g.second + 2) & 3));
-      const Eigen::Vector3d c = energy_.position(g.first->vertex((g.second + 3) & 3));
-      const Eigen::Vector3d inner = energy_.position(g.first->vertex(g.second));
-      Eigen::Vector3d n = (b - a).cross(c - a);
-      if(n.dot(inner - a) > 0) n = -n;
-      r.normal += n;
+    for(const Cell_handle& c : r.finite_cells) {
+      const int iv = c->index(r.v);
+      for(int i = 0; i < 4; ++i) {
+        if(i == iv || !c3t3_.is_in_complex(c, i)) continue;
+        // each facet once, seen from the cell of larger subdomain index
+        const Cell_handle m = c->neighbor(i);
+        if(!tr_.is_infinite(m)) {
+          const auto sc = c3t3_.subdomain_index(c), sm = c3t3_.subdomain_index(m);
+          if(sc < sm || (sc == sm && &*c < &*m)) continue;
+        }
+        const Surface_patch_index patch = c3t3_.surface_patch_index(c, i);
+        if(!has_patch) {
+          r.patch = patch;
+          has_patch = true;
+        } else if(!(patch == r.patch))
+          return false; // on two patches: it sits on a feature the domain did not protect
+        const Eigen::Vector3d a = energy_.position(c->vertex((i + 1) & 3));
+        const Eigen::Vector3d b = energy_.position(c->vertex((i + 2) & 3));
+        const Eigen::Vector3d d = energy_.position(c->vertex((i + 3) & 3));
+        const Eigen::Vector3d inner = energy_.position(c->vertex(i));
+        Eigen::Vector3d n = (b - a).cross(d - a);
+        if(n.dot(inner - a) > 0) n = -n;
+        r.normal += n;
+      }
     }
     const double len = r.normal.norm();
     if(!has_patch || !(len > 0)) return false;
@@ -296,10 +320,13 @@ private:
   bool curve_frame(Ring& r) const
   {
     if constexpr(Mesh_3::internal::Has_features<MeshDomain>::value) {
-      std::vector<Vertex_handle> adjacent;
-      tr_.finite_adjacent_vertices(r.v, std::back_inserter(adjacent));
-      for(const Vertex_handle& w : adjacent)
-        if(c3t3_.is_in_complex(r.v, w)) r.curve_neighbors.push_back(w);
+      for(const Cell_handle& c : r.finite_cells)
+        for(int i = 0; i < 4; ++i) {
+          const Vertex_handle w = c->vertex(i);
+          if(w != r.v && c3t3_.is_in_complex(r.v, w) &&
+             std::find(r.curve_neighbors.begin(), r.curve_neighbors.end(), w) == r.curve_neighbors.end())
+            r.curve_neighbors.push_back(w);
+        }
       if(r.curve_neighbors.size() != 2) return false;
       r.curve = c3t3_.curve_index(r.v, r.curve_neighbors[0]);
       return r.curve == c3t3_.curve_index(r.v, r.curve_neighbors[1]);
@@ -344,7 +371,6 @@ private:
   const MeshDomain* domain_;
   const Energy& energy_;
   bool freeze_boundary_;
-  double last_energy_change_ = 0;
 };
 
 } // namespace internal

@@ -9,6 +9,8 @@
 
 #include <CGAL/Frame_fields/Discrete_frame_field_3.h>
 
+#include <boost/io/ios_state.hpp>
+
 #include <array>
 #include <cstddef>
 #include <istream>
@@ -46,12 +48,14 @@ namespace IO {
  *
  * Keywords are case-sensitive; everything after `#` on a line is a comment. The vertices
  * and tetrahedra are those of the `.mesh` file the field belongs to, so a reader can
- * check that they match. Numbers are written with 17 significant digits.
+ * check that they match. Numbers are written with 17 significant digits; the precision
+ * of `os` is restored afterwards.
  * \throws std::runtime_error if the stream fails
  */
 template <class GeomTraits>
 void write_frame_field(std::ostream& os, const Discrete_frame_field_3<GeomTraits>& field)
 {
+  boost::io::ios_precision_saver saved_precision(os);
   os.precision(17);
   os << "VVMFrameField 1\nLocation "
      << (field.location() == Frame_location::VERTICES ? "Vertices" : "Cells") << "\nVertices\n"

@@ -9,6 +9,10 @@
 
 #include <CGAL/Frame_fields/Discrete_frame_field_3.h>
 
+#include <CGAL/number_utils.h>
+
+#include <boost/io/ios_state.hpp>
+
 #include <cstddef>
 #include <ostream>
 #include <stdexcept>
@@ -17,6 +21,32 @@
 namespace CGAL {
 namespace Frame_fields {
 namespace IO {
+namespace internal {
+
+// the XML header, the points and the opening of the connectivity array of a VTU file
+template <class Point_3>
+void write_VTU_head(std::ostream& os, const std::vector<Point_3>& points, std::size_t number_of_cells)
+{
+  os << "<?xml version=\"1.0\"?>\n"
+     << "<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
+     << "<UnstructuredGrid>\n<Piece NumberOfPoints=\"" << points.size() << "\" NumberOfCells=\""
+     << number_of_cells << "\">\n<Points>\n<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n";
+  for(const auto& p : points)
+    os << CGAL::to_double(p.x()) << " " << CGAL::to_double(p.y()) << " " << CGAL::to_double(p.z()) << "\n";
+  os << "</DataArray>\n</Points>\n<Cells>\n<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
+}
+
+// the end of the connectivity, the offsets (cells of `size` vertices) and the types
+inline void write_VTU_cell_types(std::ostream& os, std::size_t number_of_cells, std::size_t size, int vtk_type)
+{
+  os << "</DataArray>\n<DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n";
+  for(std::size_t i = 1; i <= number_of_cells; ++i) os << size * i << "\n";
+  os << "</DataArray>\n<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n";
+  for(std::size_t i = 0; i < number_of_cells; ++i) os << vtk_type << "\n";
+  os << "</DataArray>\n</Cells>\n";
+}
+
+} // namespace internal
 
 /*!
  * \ingroup PkgTetrahedralLatticeMeshingFrameFieldsIO
@@ -24,7 +54,8 @@ namespace IO {
  * tetrahedra (or, if it has none, one vertex cell per point), and the three axes of the
  * frames (the columns of \f$ T \f$) as the vector arrays `axis_1`, `axis_2`, `axis_3`,
  * point data for a field on vertices, cell data for a field on cells. In ParaView, a
- * Glyph filter per array shows the frames.
+ * Glyph filter per array shows the frames. Numbers are written with 17 significant
+ * digits; the precision of `os` is restored afterwards.
  * \throws std::runtime_error if the stream fails
  */
 template <class GeomTraits>
@@ -34,23 +65,14 @@ void write_VTU(std::ostream& os, const Discrete_frame_field_3<GeomTraits>& field
   const auto& cells = field.cells();
   const bool have_cells = !cells.empty();
   const std::size_t n_cells = have_cells ? cells.size() : points.size();
+  boost::io::ios_precision_saver saved_precision(os);
   os.precision(17);
-  os << "<?xml version=\"1.0\"?>\n"
-     << "<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
-     << "<UnstructuredGrid>\n<Piece NumberOfPoints=\"" << points.size() << "\" NumberOfCells=\""
-     << n_cells << "\">\n<Points>\n<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n";
-  for(const auto& p : points)
-    os << CGAL::to_double(p.x()) << " " << CGAL::to_double(p.y()) << " " << CGAL::to_double(p.z()) << "\n";
-  os << "</DataArray>\n</Points>\n<Cells>\n<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
+  internal::write_VTU_head(os, points, n_cells);
   if(have_cells)
     for(const auto& c : cells) os << c[0] << " " << c[1] << " " << c[2] << " " << c[3] << "\n";
   else
     for(std::size_t i = 0; i < points.size(); ++i) os << i << "\n";
-  os << "</DataArray>\n<DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n";
-  for(std::size_t i = 1; i <= n_cells; ++i) os << (have_cells ? 4 * i : i) << "\n";
-  os << "</DataArray>\n<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n";
-  for(std::size_t i = 0; i < n_cells; ++i) os << (have_cells ? 10 : 1) << "\n"; // VTK_TETRA, VTK_VERTEX
-  os << "</DataArray>\n</Cells>\n";
+  internal::write_VTU_cell_types(os, n_cells, have_cells ? 4 : 1, have_cells ? 10 : 1); // VTK_TETRA, VTK_VERTEX
   // a field on cells with no tets cannot exist (the constructor refuses it)
   const char* section = field.location() == Frame_location::VERTICES ? "PointData" : "CellData";
   os << "<" << section << " Vectors=\"axis_1\">\n";
@@ -68,26 +90,19 @@ void write_VTU(std::ostream& os, const Discrete_frame_field_3<GeomTraits>& field
  * \ingroup PkgTetrahedralLatticeMeshingFrameFieldsIO
  * writes the segments `edges` (pairs of indices into `points`) to `os` as an ASCII VTK
  * XML unstructured grid of lines, e.g. the singular edges of a generated cross field:
- * `write_edges_VTU(os, g.field.points(), g.singular_edges)`.
+ * `write_edges_VTU(os, g.field.points(), g.singular_edges)`. Numbers are written with 17
+ * significant digits; the precision of `os` is restored afterwards.
  * \throws std::runtime_error if the stream fails
  */
 template <class Point_3, class Edge>
 void write_edges_VTU(std::ostream& os, const std::vector<Point_3>& points, const std::vector<Edge>& edges)
 {
+  boost::io::ios_precision_saver saved_precision(os);
   os.precision(17);
-  os << "<?xml version=\"1.0\"?>\n"
-     << "<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
-     << "<UnstructuredGrid>\n<Piece NumberOfPoints=\"" << points.size() << "\" NumberOfCells=\""
-     << edges.size() << "\">\n<Points>\n<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n";
-  for(const auto& p : points)
-    os << CGAL::to_double(p.x()) << " " << CGAL::to_double(p.y()) << " " << CGAL::to_double(p.z()) << "\n";
-  os << "</DataArray>\n</Points>\n<Cells>\n<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
+  internal::write_VTU_head(os, points, edges.size());
   for(const auto& e : edges) os << e[0] << " " << e[1] << "\n";
-  os << "</DataArray>\n<DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n";
-  for(std::size_t i = 1; i <= edges.size(); ++i) os << 2 * i << "\n";
-  os << "</DataArray>\n<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n";
-  for(std::size_t i = 0; i < edges.size(); ++i) os << 3 << "\n"; // VTK_LINE
-  os << "</DataArray>\n</Cells>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
+  internal::write_VTU_cell_types(os, edges.size(), 2, 3); // VTK_LINE
+  os << "</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
   if(!os) throw std::runtime_error("write_edges_VTU: the stream failed");
 }
 

@@ -4,9 +4,13 @@
 // The boundary-aligned smooth cross field of Ray et al. 2016 on an indexed
 // tetrahedral mesh, one frame per vertex:
 // 1. frames as 9 band-4 SH coefficients; a boundary vertex is restricted to the
-//    frames with one axis on its normal, a vertex of a sharp edge to those with
-//    one axis on the edge (2 unknowns each: cos 4t and sin 4t, left free);
-// 2. least squares of sum over mesh edges |c_i - c_j|^2 (sparse, Eigen CG);
+//    frames with one axis on its normal, a vertex inside a sharp edge to those with
+//    one axis on the edge (2 unknowns each: cos 4t and sin 4t, left free); a
+//    corner (where sharp edges end, meet or turn by more than 45 degrees) to those
+//    with one axis on the mean normal of its largest group of nearly parallel
+//    boundary facets (the rotation about it follows its neighbours);
+// 2. least squares of sum over mesh edges |c_i - c_j|^2 (sparse, Eigen CG, with
+//    a sparse LDLT factorization if CG does not converge);
 // 3. every vertex projected to its nearest valid (constrained) frame;
 // 4. rounds of diffusion (each vertex to the sum of itself and its neighbours)
 //    and projection, which make the field smoother at the projected frames.
@@ -17,8 +21,11 @@
 #include <CGAL/Frame_fields/internal/L4_spherical_harmonics.h>
 #include <CGAL/Frame_fields/internal/Singular_edges.h>
 
+#include <CGAL/number_type_config.h> // CGAL_PI
+
 #include <Eigen/Core>
 #include <Eigen/IterativeLinearSolvers>
+#include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
 
 #ifdef CGAL_LINKED_WITH_TBB
@@ -32,6 +39,7 @@
 #include <cstddef>
 #include <iostream>
 #include <memory>
+#include <sstream>
 #include <stdexcept>
 #include <vector>
 
@@ -60,6 +68,9 @@ struct Cross_field_solution
   std::vector<std::array<std::size_t, 2>> edges;
   Singular_edge_report singularities;
   double smoothness_energy = 0; // sum over edges of |c_i - c_j|^2
+  int solver_iterations = 0;    // CG iterations of the least-squares solve
+  double solver_error = 0;      // its relative residual |Mx - b| / |b|
+  bool direct_solver = false;   // CG did not converge: the sparse LDLT factorization solved it
 };
 
 class Cross_field_solver
@@ -90,13 +101,22 @@ public:
   }
 
   std::size_t number_of_constrained_vertices() const { return n_constrained_; }
+  /// the vertices whose frames are constrained to one axis on a boundary facet normal
+  /// although they are on sharp edges (corners, curve ends, sharp turns)
+  std::size_t number_of_corner_vertices() const { return n_corners_; }
+  /// the constrained axis of each vertex (zero if free)
+  const std::vector<Eigen::Vector3d>& constrained_axes() const { return axis_; }
 
+  /// the most CG iterations before the direct solver takes over (default 5000)
+  void set_max_iterations(int k) { max_iterations_ = k; }
+
+  /// \throws std::runtime_error if neither CG nor the LDLT factorization solves the system
   Cross_field_solution solve(int diffusion_rounds, bool verbose) const
   {
     const L4_frames& frames = L4_frames::instance();
     const std::size_t n = xyz_.size();
-    std::vector<SH_vector> c = least_squares(verbose);
     Cross_field_solution s;
+    std::vector<SH_vector> c = least_squares(verbose, s);
     s.vertex_frames.resize(n);
     s.coefficients.resize(n);
     for_each_index(n, [&](std::size_t v) { s.vertex_frames[v] = nearest_frame(v, c[v]); });
@@ -128,17 +148,22 @@ public:
 
 private:
   // an axis direction per constrained vertex: the normal on the boundary, the
-  // tangent on a sharp edge; corners (not 2 sharp edges, or a sharp turn) stay free
+  // tangent inside a sharp edge (2 sharp edges turning by less than 45 degrees), and
+  // at a corner (any other vertex of sharp edges) the normal of its largest group of
+  // boundary facets
   void classify_vertices(const std::vector<std::array<std::size_t, 2>>& feature_edges)
   {
     const std::size_t n = xyz_.size();
     std::vector<Eigen::Matrix3d> normal_tensor(n, Eigen::Matrix3d::Zero());
     std::vector<char> on_boundary(n, 0);
-    for(const auto& f : boundary_facets_) {
+    std::vector<std::vector<std::size_t>> facets_of(n);
+    for(std::size_t i = 0; i < boundary_facets_.size(); ++i) {
+      const auto& f = boundary_facets_[i];
       const Eigen::Vector3d N = (xyz_[f[1]] - xyz_[f[0]]).cross(xyz_[f[2]] - xyz_[f[0]]);
       const double len = N.norm();
       for(std::size_t v : f) {
         on_boundary[v] = 1;
+        facets_of[v].push_back(i);
         if(len > 0) normal_tensor[v] += N * N.transpose() / (2 * len); // area n n^T
       }
     }
@@ -148,14 +173,19 @@ private:
       sharp[e[1]].push_back(e[0]);
     }
     axis_.assign(n, Eigen::Vector3d::Zero());
+    n_corners_ = 0;
     for(std::size_t v = 0; v < n; ++v) {
       if(sharp[v].size() == 2) {
         const Eigen::Vector3d d0 = (xyz_[v] - xyz_[sharp[v][0]]).normalized();
         const Eigen::Vector3d d1 = (xyz_[sharp[v][1]] - xyz_[v]).normalized();
-        if(d0.dot(d1) > std::cos(3.14159265358979323846 / 4)) axis_[v] = (d0 + d1).normalized();
+        if(d0.dot(d1) > std::cos(CGAL_PI / 4)) axis_[v] = (d0 + d1).normalized();
       } else if(sharp[v].empty() && on_boundary[v] && normal_tensor[v].trace() > 0) {
         Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(normal_tensor[v]);
         axis_[v] = eig.eigenvectors().col(2);
+      }
+      if(!sharp[v].empty() && axis_[v].squaredNorm() == 0) { // a corner
+        axis_[v] = dominant_facet_normal(facets_of[v]);
+        if(axis_[v].squaredNorm() > 0) ++n_corners_;
       }
       if(!axis_[v].allFinite()) axis_[v].setZero();
     }
@@ -166,6 +196,43 @@ private:
         constrained_[v] = std::make_shared<Axis_constrained_frames>(axis_[v]);
         ++n_constrained_;
       }
+  }
+
+  // the mean unit normal of the largest (by area) group of facets whose normals are
+  // within 30 degrees of each other (orientation ignored); zero if all are degenerate
+  Eigen::Vector3d dominant_facet_normal(const std::vector<std::size_t>& facets) const
+  {
+    struct Group
+    {
+      Eigen::Vector3d sum;  // area-weighted, oriented like the first normal
+      double area;
+    };
+    std::vector<Group> groups;
+    const double cos_bound = std::cos(CGAL_PI / 6);
+    for(std::size_t i : facets) {
+      const auto& f = boundary_facets_[i];
+      const Eigen::Vector3d N = (xyz_[f[1]] - xyz_[f[0]]).cross(xyz_[f[2]] - xyz_[f[0]]);
+      const double area = 0.5 * N.norm();
+      if(!(area > 0)) continue;
+      const Eigen::Vector3d u = N.normalized();
+      Group* into = nullptr;
+      for(Group& g : groups)
+        if(std::abs(g.sum.normalized().dot(u)) > cos_bound) {
+          into = &g;
+          break;
+        }
+      if(into == nullptr) {
+        groups.push_back({Eigen::Vector3d::Zero(), 0.});
+        into = &groups.back();
+      }
+      into->sum += (into->sum.dot(u) < 0 ? -area : area) * u;
+      into->area += area;
+    }
+    const Group* best = nullptr;
+    for(const Group& g : groups)
+      if(best == nullptr || g.area > best->area) best = &g;
+    return best != nullptr && best->sum.norm() > 0 ? Eigen::Vector3d(best->sum.normalized())
+                                                   : Eigen::Vector3d::Zero();
   }
 
   Eigen::Matrix3d nearest_frame(std::size_t v, const SH_vector& q) const
@@ -181,7 +248,7 @@ private:
   }
   SH_vector b(std::size_t v) const { return constrained_[v] ? constrained_[v]->offset : SH_vector::Zero(); }
 
-  std::vector<SH_vector> least_squares(bool verbose) const
+  std::vector<SH_vector> least_squares(bool verbose, Cross_field_solution& report) const
   {
     const std::size_t n = xyz_.size();
     std::vector<Eigen::Index> offset(n + 1, 0);
@@ -214,12 +281,30 @@ private:
     triplets.shrink_to_fit();
     Eigen::ConjugateGradient<Eigen::SparseMatrix<double>, Eigen::Lower | Eigen::Upper> cg;
     cg.setTolerance(1e-8);
-    cg.setMaxIterations(5000);
+    cg.setMaxIterations(max_iterations_);
     cg.compute(M);
-    const Eigen::VectorXd x = cg.solve(rhs);
+    Eigen::VectorXd x = cg.solve(rhs);
+    report.solver_iterations = int(cg.iterations());
+    report.solver_error = cg.error();
+    const bool converged = cg.info() == Eigen::Success && x.allFinite();
     if(verbose)
       std::cerr << "  least squares: " << size << " unknowns, " << M.nonZeros() << " non-zeros, CG "
-                << cg.iterations() << " iterations, error " << cg.error() << "\n";
+                << cg.iterations() << " iterations, error " << cg.error()
+                << (converged ? "" : " (not converged: sparse LDLT instead)") << "\n";
+    if(!converged) {
+      std::ostringstream why;
+      why << "generate_cross_field_3: the least-squares solve failed: CG stopped after " << cg.iterations()
+          << " iterations at relative error " << cg.error();
+      Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt(M);
+      if(ldlt.info() != Eigen::Success) throw std::runtime_error(why.str() + ", and the LDLT factorization failed");
+      x = ldlt.solve(rhs);
+      const double norm = rhs.norm();
+      report.solver_error = norm > 0 ? (M * x - rhs).norm() / norm : (M * x).norm();
+      report.direct_solver = true;
+      if(ldlt.info() != Eigen::Success || !x.allFinite() || !(report.solver_error < 1e-6))
+        throw std::runtime_error(why.str() + ", and the LDLT solve failed");
+      if(verbose) std::cerr << "  least squares: LDLT, relative error " << report.solver_error << "\n";
+    }
     std::vector<SH_vector> c(n);
     for(std::size_t v = 0; v < n; ++v)
       c[v] = A(v) * x.segment(offset[v], offset[v + 1] - offset[v]) + b(v);
@@ -240,7 +325,8 @@ private:
   std::vector<std::vector<std::size_t>> neighbours_;
   std::vector<Eigen::Vector3d> axis_;
   std::vector<std::shared_ptr<const Axis_constrained_frames>> constrained_;
-  std::size_t n_constrained_ = 0;
+  std::size_t n_constrained_ = 0, n_corners_ = 0;
+  int max_iterations_ = 5000;
 };
 
 } // namespace internal

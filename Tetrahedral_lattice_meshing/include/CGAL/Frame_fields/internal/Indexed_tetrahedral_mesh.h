@@ -13,6 +13,7 @@
 #include <CGAL/GSM_mesh_optimization/tetrahedron_quality.h> // internal::to_eigen
 
 #include <CGAL/Mesh_complex_3_in_triangulation_3.h>
+#include <CGAL/number_type_config.h> // CGAL_PI
 #include <CGAL/Triangulation_3.h>
 
 #include <Eigen/Core>
@@ -88,7 +89,7 @@ void detect_sharp_boundary_edges(Mesh& mesh, const std::vector<Eigen::Vector3d>&
                                  double angle_deg)
 {
   if(!(angle_deg > 0)) return;
-  const double cos_bound = std::cos(angle_deg * 3.14159265358979323846 / 180);
+  const double cos_bound = std::cos(angle_deg * CGAL_PI / 180);
   std::map<std::array<std::size_t, 2>, std::vector<std::size_t>> facets_of_edge;
   for(std::size_t f = 0; f < mesh.boundary_facets.size(); ++f)
     for(int k = 0; k < 3; ++k) {

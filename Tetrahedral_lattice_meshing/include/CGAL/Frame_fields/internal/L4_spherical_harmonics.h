@@ -14,6 +14,8 @@
 #ifndef CGAL_FRAME_FIELDS_INTERNAL_L4_SPHERICAL_HARMONICS_H
 #define CGAL_FRAME_FIELDS_INTERNAL_L4_SPHERICAL_HARMONICS_H
 
+#include <CGAL/number_type_config.h> // CGAL_PI
+
 #include <Eigen/Cholesky>
 #include <Eigen/Core>
 #include <Eigen/Eigenvalues>
@@ -33,7 +35,7 @@ typedef Eigen::Matrix<double, 9, 9> SH_matrix;
 /// the 9 band-4 real SH at `p` (homogeneous quartics: exact for unit `p`)
 inline SH_vector sh4(const Eigen::Vector3d& p)
 {
-  const double pi = 3.14159265358979323846;
+  const double pi = CGAL_PI;
   const double k1 = 0.75 * std::sqrt(35 / pi), k2 = 0.75 * std::sqrt(35 / (2 * pi)),
                k3 = 0.75 * std::sqrt(5 / pi), k4 = 0.75 * std::sqrt(5 / (2 * pi)),
                k5 = 3. / 16 * std::sqrt(1 / pi), k6 = 3. / 8 * std::sqrt(5 / pi),
@@ -56,7 +58,7 @@ inline SH_vector sh4(const Eigen::Vector3d& p)
 /// d/dp of sh4: row i is the gradient of Y_i
 inline Eigen::Matrix<double, 9, 3> sh4_gradient(const Eigen::Vector3d& p)
 {
-  const double pi = 3.14159265358979323846;
+  const double pi = CGAL_PI;
   const double k1 = 0.75 * std::sqrt(35 / pi), k2 = 0.75 * std::sqrt(35 / (2 * pi)),
                k3 = 0.75 * std::sqrt(5 / pi), k4 = 0.75 * std::sqrt(5 / (2 * pi)),
                k5 = 3. / 16 * std::sqrt(1 / pi), k6 = 3. / 8 * std::sqrt(5 / pi),
@@ -164,7 +166,7 @@ private:
   L4_frames()
   {
     // Fibonacci directions: well spread, so the least-squares fit is well conditioned
-    const double golden = 3.14159265358979323846 * (3 - std::sqrt(5.));
+    const double golden = CGAL_PI * (3 - std::sqrt(5.));
     Eigen::Matrix<double, 9, n_samples> Ys;
     for(int k = 0; k < n_samples; ++k) {
       const double z = 1 - (2 * k + 1) / double(n_samples), r = std::sqrt(1 - z * z);

@@ -8,6 +8,8 @@
 #ifndef CGAL_FRAME_FIELDS_INTERNAL_UNIFORM_GRID_3_H
 #define CGAL_FRAME_FIELDS_INTERNAL_UNIFORM_GRID_3_H
 
+#include <CGAL/assertions.h>
+
 #include <Eigen/Core>
 
 #include <algorithm>
@@ -96,12 +98,15 @@ public:
     for(std::size_t k = offsets_[c]; k < offsets_[c + 1]; ++k) f(items_[k]);
   }
 
-  /// the index minimizing (distance(p, point(i)), i) over the points this grid was
-  /// built on (boxes lo = hi); -1 if there are none. Visits shells of grid cells
-  /// around p's cell until no unvisited cell can hold a nearer point.
+  /// the index minimizing (squared distance(p, point(i)), i) over the points this grid
+  /// was built on (boxes lo = hi); -1 if there are none. Visits shells of grid cells
+  /// around p's cell until no unvisited cell can hold a nearer point. `p` must be
+  /// finite; far from the grid, where squared distances overflow to infinity, every
+  /// point ties and the smallest index wins.
   template <class PointOf>
   std::ptrdiff_t nearest(const Eigen::Vector3d& p, PointOf point_of) const
   {
+    CGAL_precondition(p.allFinite());
     if(items_.empty()) return -1;
     const std::array<int, 3> c = index_of(p);
     std::ptrdiff_t best = -1;
@@ -111,7 +116,7 @@ public:
       for(std::size_t k = offsets_[g]; k < offsets_[g + 1]; ++k) {
         const std::size_t i = items_[k];
         const double d2 = (point_of(i) - p).squaredNorm();
-        if(d2 < best_d2 || (d2 == best_d2 && std::ptrdiff_t(i) < best)) {
+        if(best < 0 || d2 < best_d2 || (d2 == best_d2 && std::ptrdiff_t(i) < best)) {
           best_d2 = d2;
           best = std::ptrdiff_t(i);
         }
@@ -134,10 +139,13 @@ public:
           }
         }
       // every unvisited grid cell lies in the grid box beyond a face of the visited box
+      // (the bound may overflow to infinity far from the grid: then all cells are visited)
       double bound2 = std::numeric_limits<double>::infinity();
+      bool unvisited = false;
       for(int a = 0; a < 3; ++a)
         for(int side = 0; side < 2; ++side) {
           if(side == 0 ? lo[a] == 0 : hi[a] == dims_[a] - 1) continue;
+          unvisited = true;
           Eigen::Vector3d box_lo = origin_, box_hi = origin_ + cell_size_.cwiseProduct(
               Eigen::Vector3d(dims_[0], dims_[1], dims_[2]));
           if(side == 0) box_hi[a] = origin_[a] + lo[a] * cell_size_[a];
@@ -145,8 +153,9 @@ public:
           const Eigen::Vector3d gap = (box_lo - p).cwiseMax(p - box_hi).cwiseMax(0.);
           bound2 = std::min(bound2, gap.squaredNorm());
         }
-      if(bound2 == std::numeric_limits<double>::infinity() || (best >= 0 && best_d2 < bound2)) break;
+      if(!unvisited || (best >= 0 && best_d2 < bound2)) break;
     }
+    CGAL_postcondition(best >= 0); // the grid is not empty and every cell was visited if needed
     return best;
   }
 

@@ -1,0 +1,178 @@
+// Copyright (c) 2026 VVM contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Edge removal (Shewchuk 2002, "Two discrete optimization algorithms for the
+// topological improvement of tetrahedral meshes"): the m cells around an edge
+// (a, b), whose other vertices form a closed ring r_0 .. r_{m-1}, are replaced
+// by the 2(m - 2) cells (a, t) and (b, t) over the triangles t of a
+// triangulation of the ring polygon. The triangulation is the one of least
+// energy sum with every new cell positively oriented, from Klincsek's O(m^3)
+// dynamic program. m = 4 is the 4-4 flip.
+//
+// It is made combinatorially, with the triangulation data structure's unchecked
+// flips: m - 3 2-3 flips of the facets (a, b, r_j), each cutting an ear
+// (r_i, r_j, r_k) off the ring, then a 3-2 flip of (a, b). Intermediate cells may
+// be inverted; every final cell was checked before anything changed. All final
+// cells positively oriented, with the same boundary as the old ones, tile the
+// same region.
+
+#ifndef CGAL_GSM_MESH_OPTIMIZATION_INTERNAL_EDGE_REMOVAL_H
+#define CGAL_GSM_MESH_OPTIMIZATION_INTERNAL_EDGE_REMOVAL_H
+
+#include <CGAL/GSM_mesh_optimization/internal/Cell_replacement.h>
+
+#include <algorithm>
+#include <array>
+#include <limits>
+#include <vector>
+
+namespace CGAL {
+namespace GSM_mesh_optimization {
+namespace internal {
+
+constexpr int max_polygon_size = 12;
+
+/// a triangulation of the polygon 0 .. m-1: triangles (i, j, k), i < j < k, in an
+/// order where each is an ear of the polygon left by the ones before (the last
+/// one is what remains); `cost` is infinite if there is none
+struct Polygon_triangulation
+{
+  double cost = std::numeric_limits<double>::infinity();
+  std::vector<std::array<int, 3>> triangles;
+};
+
+/// the triangulation of the polygon 0 .. m-1 (3 <= m <= max_polygon_size) of least
+/// sum of `weight(i, j, k)` (i < j < k) over its triangles (Klincsek 1980), if it is
+/// below `bound`; `weight` is nonnegative, and infinite for a triangle that may not
+/// be used
+template <class Weight>
+Polygon_triangulation best_polygon_triangulation(int m, const Weight& weight,
+                                                 double bound = std::numeric_limits<double>::infinity())
+{
+  std::array<std::array<double, max_polygon_size>, max_polygon_size> cost; // of the polygon i .. k
+  std::array<std::array<int, max_polygon_size>, max_polygon_size> split;
+  for(int i = 0; i + 1 < m; ++i) cost[i][i + 1] = 0;
+  for(int length = 2; length < m; ++length)
+    for(int i = 0; i + length < m; ++i) {
+      const int k = i + length;
+      cost[i][k] = bound; // no part of a triangulation can cost more than all of it
+      split[i][k] = -1;
+      for(int j = i + 1; j < k; ++j) {
+        const double parts = cost[i][j] + cost[j][k];
+        if(!(parts < cost[i][k])) continue; // the weight cannot make up for it
+        const double c = parts + weight(i, j, k);
+        if(c < cost[i][k]) {
+          cost[i][k] = c;
+          split[i][k] = j;
+        }
+      }
+    }
+  Polygon_triangulation t;
+  if(m < 3 || split[0][m - 1] < 0) return t;
+  t.cost = cost[0][m - 1];
+  // post-order: once the polygons (i .. j) and (j .. k) are cut away, (i, j, k) is an ear
+  std::vector<std::array<int, 3>> stack{{{0, m - 1, 0}}}; // (i, k, children done)
+  while(!stack.empty()) {
+    std::array<int, 3>& top = stack.back();
+    const int i = top[0], k = top[1], j = split[i][k];
+    if(top[2] == 0) {
+      top[2] = 1;
+      if(j - i >= 2) stack.push_back({{i, j, 0}});
+      if(k - j >= 2) stack.push_back({{j, k, 0}});
+    } else {
+      t.triangles.push_back({{i, j, k}});
+      stack.pop_back();
+    }
+  }
+  return t;
+}
+
+template <class C3T3>
+class Edge_removal : public Cell_replacement<C3T3>
+{
+  typedef Cell_replacement<C3T3> Base;
+
+public:
+  typedef typename Base::Vertex_handle Vertex_handle;
+  typedef typename Base::Cell_handle Cell_handle;
+  typedef typename Base::Edge Edge;
+  typedef typename Base::Subdomain_index Subdomain_index;
+
+  using Base::Base;
+
+  /// removes the edge `e` with 4 to `max_ring` cells around it, if some
+  /// triangulation of its ring lowers the mean energy
+  bool try_remove_edge(const Edge& e, std::size_t max_ring)
+  {
+    std::vector<Cell_handle> ring;
+    std::vector<Vertex_handle> r;
+    Subdomain_index s;
+    if(!this->removable_edge(e, ring, r, s, max_ring) || ring.size() < 4) return false;
+    const int m = int(ring.size());
+    const Vertex_handle a = e.first->vertex(e.second), b = e.first->vertex(e.third);
+    // cells[i] = (a, b, r_i, r_{i+1}); turn the ring so that these are positive
+    std::vector<Cell_handle> cells(m);
+    for(int i = 0; i < m; ++i) cells[i] = ring[(i + 1) % m];
+    const CGAL::Orientation o = this->orientation(a, b, r[0], r[1]);
+    if(o == CGAL::ZERO) return false;
+    if(o == CGAL::NEGATIVE) {
+      std::reverse(r.begin(), r.end());
+      std::reverse(cells.begin(), cells.end());
+      std::rotate(cells.begin(), cells.begin() + 1, cells.end());
+    }
+    double old_sum = 0;
+    for(const Cell_handle& c : cells) old_sum += this->energy_.cell(c);
+    // then (a, r_i, r_j, r_k) and (b, r_i, r_k, r_j), i < j < k, must be positive;
+    // the bound is the criterion of lowers_mean()
+    const double infinity = std::numeric_limits<double>::infinity();
+    const Polygon_triangulation t = best_polygon_triangulation(m, [&](int i, int j, int k) {
+      if(this->orientation(a, r[i], r[j], r[k]) != CGAL::POSITIVE ||
+         this->orientation(b, r[i], r[k], r[j]) != CGAL::POSITIVE)
+        return infinity;
+      return this->tet_energy(a, r[i], r[j], r[k]) + this->tet_energy(b, r[i], r[j], r[k]);
+    }, old_sum + double(m - 4) * this->mean());
+    if(t.triangles.empty() || !this->lowers_mean(old_sum, t.cost, m - 4)) return false;
+
+    this->release(cells);
+    flip_ring(a, b, r, cells, t);
+    std::vector<Cell_handle> new_cells;
+    for(const auto& tri : t.triangles)
+      for(const Cell_handle& c : this->cells_on(r[tri[0]], r[tri[1]], r[tri[2]])) new_cells.push_back(c);
+    CGAL_assertion(new_cells.size() == std::size_t(2 * (m - 2)));
+    this->claim(new_cells, s);
+    this->account(old_sum, t.cost, m - 4);
+    return true;
+  }
+
+private:
+  // the flips that make `t`; `cells[i]` is the cell (a, b, r_i, r_{i+1})
+  void flip_ring(const Vertex_handle& a, const Vertex_handle& b, const std::vector<Vertex_handle>& r,
+                 std::vector<Cell_handle> cells, const Polygon_triangulation& t)
+  {
+    auto& tds = this->tr_.tds();
+    for(std::size_t n = 0; n + 1 < t.triangles.size(); ++n) {
+      const int i = t.triangles[n][0], k = t.triangles[n][2];
+      // the facet (a, b, r_j), between the cells over (r_i, r_j) and (r_j, r_k)
+      const Cell_handle c = cells[i];
+      tds.flip_flippable(c, c->index(r[i]));
+      // the three new cells share the edge (r_i, r_k): c and two of its neighbours
+      cells[i] = c;
+      for(int l = 0; l < 4 && !is_ring_cell(cells[i], a, b, r[i], r[k]); ++l) cells[i] = c->neighbor(l);
+      CGAL_assertion(is_ring_cell(cells[i], a, b, r[i], r[k]));
+    }
+    const Cell_handle c = cells[t.triangles.back()[0]];
+    tds.flip_flippable(c, c->index(a), c->index(b));
+  }
+
+  static bool is_ring_cell(const Cell_handle& c, const Vertex_handle& a, const Vertex_handle& b,
+                           const Vertex_handle& u, const Vertex_handle& w)
+  {
+    return c->has_vertex(a) && c->has_vertex(b) && c->has_vertex(u) && c->has_vertex(w);
+  }
+};
+
+} // namespace internal
+} // namespace GSM_mesh_optimization
+} // namespace CGAL
+
+#endif // CGAL_GSM_MESH_OPTIMIZATION_INTERNAL_EDGE_REMOVAL_H
