@@ -19,21 +19,14 @@ import subprocess
 import sys
 import xml.etree.ElementTree as ET
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+from vvm_checks import Checks  # noqa: E402
+
 import meshio
 import numpy as np
 
 EXE, DATA, WORK = sys.argv[1:4]
-passed = failed = 0
-
-
-def check(ok, what):
-    global passed, failed
-    if ok:
-        passed += 1
-    else:
-        failed += 1
-        print("check failed:", what, file=sys.stderr)
-    return ok
+check = Checks("check_compare_optimizers")
 
 
 def dihedral_angles(points, tets):
@@ -187,8 +180,7 @@ def main():
     check_error("too few vertices", ["sphere", "--vertices", "3"], "--vertices")
     check_error("bad angle", ["sphere", "--features-angle", "-5"], "--features-angle")
 
-    print(f"check_compare_optimizers: {passed} passed, {failed} failed")
-    return 1 if failed else 0
+    return check.summary()
 
 
 if __name__ == "__main__":

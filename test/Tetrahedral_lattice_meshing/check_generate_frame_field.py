@@ -25,21 +25,14 @@ import shutil
 import subprocess
 import sys
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+from vvm_checks import Checks  # noqa: E402
+
 import meshio
 import numpy as np
 
 EXE, DATA, WORK = sys.argv[1:4]
-passed = failed = 0
-
-
-def check(ok, what):
-    global passed, failed
-    if ok:
-        passed += 1
-    else:
-        failed += 1
-        print("check failed:", what, file=sys.stderr)
-    return ok
+check = Checks("check_generate_frame_field")
 
 
 def run(args):
@@ -183,5 +176,4 @@ for args, words in cases:
     check(r.returncode == 2, "exit code 2 for %s (got %d)" % (args, r.returncode))
     check(words in r.stderr, "message with '%s' for %s: %s" % (words, args, r.stderr.strip()[:200]))
 
-print("check_generate_frame_field: %d passed, %d failed" % (passed, failed))
-sys.exit(0 if failed == 0 else 1)
+sys.exit(check.summary())

@@ -32,50 +32,51 @@ namespace internal {
 typedef Eigen::Matrix<double, 9, 1> SH_vector;
 typedef Eigen::Matrix<double, 9, 9> SH_matrix;
 
+// the normalization constants of the band-4 real spherical harmonics
+struct SH4_constants
+{
+  const double k1 = 0.75 * std::sqrt(35 / CGAL_PI), k2 = 0.75 * std::sqrt(35 / (2 * CGAL_PI)),
+               k3 = 0.75 * std::sqrt(5 / CGAL_PI), k4 = 0.75 * std::sqrt(5 / (2 * CGAL_PI)),
+               k5 = 3. / 16 * std::sqrt(1 / CGAL_PI), k6 = 3. / 8 * std::sqrt(5 / CGAL_PI),
+               k7 = 3. / 16 * std::sqrt(35 / CGAL_PI);
+};
+
 /// the 9 band-4 real SH at `p` (homogeneous quartics: exact for unit `p`)
 inline SH_vector sh4(const Eigen::Vector3d& p)
 {
-  const double pi = CGAL_PI;
-  const double k1 = 0.75 * std::sqrt(35 / pi), k2 = 0.75 * std::sqrt(35 / (2 * pi)),
-               k3 = 0.75 * std::sqrt(5 / pi), k4 = 0.75 * std::sqrt(5 / (2 * pi)),
-               k5 = 3. / 16 * std::sqrt(1 / pi), k6 = 3. / 8 * std::sqrt(5 / pi),
-               k7 = 3. / 16 * std::sqrt(35 / pi);
+  const SH4_constants k;
   const double x = p.x(), y = p.y(), z = p.z();
   const double x2 = x * x, y2 = y * y, z2 = z * z;
   SH_vector Y;
-  Y << k1 * x * y * (x2 - y2),
-       k2 * y * z * (3 * x2 - y2),
-       k3 * x * y * (6 * z2 - x2 - y2),
-       k4 * y * z * (4 * z2 - 3 * x2 - 3 * y2),
-       k5 * (3 * x2 * x2 + 3 * y2 * y2 + 8 * z2 * z2 + 6 * x2 * y2 - 24 * x2 * z2 - 24 * y2 * z2),
-       k4 * x * z * (4 * z2 - 3 * x2 - 3 * y2),
-       k6 * (6 * x2 * z2 - 6 * y2 * z2 - x2 * x2 + y2 * y2),
-       k2 * x * z * (x2 - 3 * y2),
-       k7 * (x2 * x2 - 6 * x2 * y2 + y2 * y2);
+  Y << k.k1 * x * y * (x2 - y2),
+       k.k2 * y * z * (3 * x2 - y2),
+       k.k3 * x * y * (6 * z2 - x2 - y2),
+       k.k4 * y * z * (4 * z2 - 3 * x2 - 3 * y2),
+       k.k5 * (3 * x2 * x2 + 3 * y2 * y2 + 8 * z2 * z2 + 6 * x2 * y2 - 24 * x2 * z2 - 24 * y2 * z2),
+       k.k4 * x * z * (4 * z2 - 3 * x2 - 3 * y2),
+       k.k6 * (6 * x2 * z2 - 6 * y2 * z2 - x2 * x2 + y2 * y2),
+       k.k2 * x * z * (x2 - 3 * y2),
+       k.k7 * (x2 * x2 - 6 * x2 * y2 + y2 * y2);
   return Y;
 }
 
 /// d/dp of sh4: row i is the gradient of Y_i
 inline Eigen::Matrix<double, 9, 3> sh4_gradient(const Eigen::Vector3d& p)
 {
-  const double pi = CGAL_PI;
-  const double k1 = 0.75 * std::sqrt(35 / pi), k2 = 0.75 * std::sqrt(35 / (2 * pi)),
-               k3 = 0.75 * std::sqrt(5 / pi), k4 = 0.75 * std::sqrt(5 / (2 * pi)),
-               k5 = 3. / 16 * std::sqrt(1 / pi), k6 = 3. / 8 * std::sqrt(5 / pi),
-               k7 = 3. / 16 * std::sqrt(35 / pi);
+  const SH4_constants k;
   const double x = p.x(), y = p.y(), z = p.z();
   const double x2 = x * x, y2 = y * y, z2 = z * z;
   Eigen::Matrix<double, 9, 3> G;
-  G << k1 * (3 * x2 * y - y2 * y), k1 * (x2 * x - 3 * x * y2), 0,
-       k2 * 6 * x * y * z, k2 * (3 * x2 * z - 3 * y2 * z), k2 * (3 * x2 * y - y2 * y),
-       k3 * (6 * y * z2 - 3 * x2 * y - y2 * y), k3 * (6 * x * z2 - x2 * x - 3 * x * y2), k3 * 12 * x * y * z,
-       -k4 * 6 * x * y * z, k4 * (4 * z2 * z - 3 * x2 * z - 9 * y2 * z), k4 * (12 * y * z2 - 3 * x2 * y - 3 * y2 * y),
-       k5 * (12 * x2 * x + 12 * x * y2 - 48 * x * z2), k5 * (12 * y2 * y + 12 * x2 * y - 48 * y * z2),
-           k5 * (32 * z2 * z - 48 * x2 * z - 48 * y2 * z),
-       k4 * (4 * z2 * z - 9 * x2 * z - 3 * y2 * z), -k4 * 6 * x * y * z, k4 * (12 * x * z2 - 3 * x2 * x - 3 * x * y2),
-       k6 * (12 * x * z2 - 4 * x2 * x), k6 * (4 * y2 * y - 12 * y * z2), k6 * (12 * x2 * z - 12 * y2 * z),
-       k2 * (3 * x2 * z - 3 * y2 * z), -k2 * 6 * x * y * z, k2 * (x2 * x - 3 * x * y2),
-       k7 * (4 * x2 * x - 12 * x * y2), k7 * (4 * y2 * y - 12 * x2 * y), 0;
+  G << k.k1 * (3 * x2 * y - y2 * y), k.k1 * (x2 * x - 3 * x * y2), 0,
+       k.k2 * 6 * x * y * z, k.k2 * (3 * x2 * z - 3 * y2 * z), k.k2 * (3 * x2 * y - y2 * y),
+       k.k3 * (6 * y * z2 - 3 * x2 * y - y2 * y), k.k3 * (6 * x * z2 - x2 * x - 3 * x * y2), k.k3 * 12 * x * y * z,
+       -k.k4 * 6 * x * y * z, k.k4 * (4 * z2 * z - 3 * x2 * z - 9 * y2 * z), k.k4 * (12 * y * z2 - 3 * x2 * y - 3 * y2 * y),
+       k.k5 * (12 * x2 * x + 12 * x * y2 - 48 * x * z2), k.k5 * (12 * y2 * y + 12 * x2 * y - 48 * y * z2),
+           k.k5 * (32 * z2 * z - 48 * x2 * z - 48 * y2 * z),
+       k.k4 * (4 * z2 * z - 9 * x2 * z - 3 * y2 * z), -k.k4 * 6 * x * y * z, k.k4 * (12 * x * z2 - 3 * x2 * x - 3 * x * y2),
+       k.k6 * (12 * x * z2 - 4 * x2 * x), k.k6 * (4 * y2 * y - 12 * y * z2), k.k6 * (12 * x2 * z - 12 * y2 * z),
+       k.k2 * (3 * x2 * z - 3 * y2 * z), -k.k2 * 6 * x * y * z, k.k2 * (x2 * x - 3 * x * y2),
+       k.k7 * (4 * x2 * x - 12 * x * y2), k.k7 * (4 * y2 * y - 12 * x2 * y), 0;
   return G;
 }
 
