@@ -11,11 +11,14 @@
 #include <CGAL/Mesh_complex_3_in_triangulation_3.h>
 #include <CGAL/Mesh_triangulation_3.h>
 #include <CGAL/GSM_mesh_optimization/IO/read_closed_surface.h>
+#include <CGAL/Polygon_mesh_processing/distance.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 #include <CGAL/Polyhedral_mesh_domain_with_features_3.h>
 #include <CGAL/Surface_mesh.h>
+#include <CGAL/facets_in_complex_3_to_triangle_mesh.h>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -66,6 +69,15 @@ int run_polyhedral_domain(const Options& options)
   if(angle > 0) domain.detect_features(angle);
   Comparison_driver<C3T3, Domain> driver(options, is_cube ? "cube" : GSM::IO::file_stem(options.input), domain,
                                          volume);
+  // two-sided, sampled on a grid of about 200,000 points on each surface (deterministic)
+  const double spacing = std::sqrt(PMP::area(surface) / 2e5);
+  driver.set_boundary_distance([&surface, spacing](const C3T3& c3t3) {
+    Surface_mesh boundary;
+    CGAL::facets_in_complex_3_to_triangle_mesh(c3t3, boundary);
+    const auto np = PMP::parameters::use_grid_sampling(true).grid_spacing(spacing);
+    return (std::max)(PMP::approximate_Hausdorff_distance<CGAL::Parallel_if_available_tag>(boundary, surface, np),
+                      PMP::approximate_Hausdorff_distance<CGAL::Parallel_if_available_tag>(surface, boundary, np));
+  });
   return driver.run();
 }
 

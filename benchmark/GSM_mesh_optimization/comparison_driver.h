@@ -129,6 +129,7 @@ struct Chain_result
   GSM::Mesh_quality_statistics quality;
   double opt_time_s = 0; // median over the repeats
   std::string return_codes;
+  double boundary_distance = -1; // Hausdorff distance to the input surface; < 0: not measured
 };
 
 template <class C3T3, class MeshDomain>
@@ -146,10 +147,18 @@ public:
     if(!field_.name.empty()) model_ += "_" + field_.name;
   }
 
+  /// `distance(c3t3)`: the Hausdorff distance from its boundary to the input
+  /// surface, reported for each chain against the initial mesh's (column hd/hd0)
+  void set_boundary_distance(std::function<double(const C3T3&)> distance)
+  {
+    boundary_distance_ = std::move(distance);
+  }
+
   int run()
   {
     for(const std::string& chain : options_.chains) chain_steps(chain); // validate first
     make_initial_mesh();
+    if(boundary_distance_) initial_boundary_distance_ = boundary_distance_(initial_);
     std::vector<Chain_result> results;
     for(const std::string& chain : options_.chains) {
       results.push_back(run_chain(chain));
@@ -257,6 +266,7 @@ private:
     result.opt_time_s = times.size() % 2 ? times[times.size() / 2]
                                          : 0.5 * (times[times.size() / 2 - 1] + times[times.size() / 2]);
     result.quality = quality(c3t3);
+    if(boundary_distance_) result.boundary_distance = boundary_distance_(c3t3);
     if(!options_.out_dir.empty()) write_outputs(c3t3, result);
     return result;
   }
@@ -292,6 +302,7 @@ private:
       os << ", \"n_min_dih_lt" << int(q.dihedral_thresholds[i]) << "\": " << q.n_min_dihedral_below[i];
     os << ", \"gamma_min\": " << q.min_radius_ratio << ", \"gamma_mean\": " << q.mean_radius_ratio
        << ", \"n_inverted\": " << q.number_of_inverted_cells << ", \"opt_time_s\": " << r.opt_time_s
+       << ", \"hausdorff_to_input\": " << r.boundary_distance
        << ", \"field\": \"" << field_.name << "\", \"repeat\": " << (std::max)(1, options_.repeat) << ", \"threads\": " << options_.threads
        << ", \"edge_size\": " << edge_size_ << ", \"mesh_time_s\": " << mesh_time_s_
        << ", \"return_codes\": \"" << r.return_codes << "\"}\n";
@@ -309,20 +320,23 @@ private:
                 mesh_time_s_, (std::max)(1, options_.repeat));
     if(!field_.name.empty())
       std::printf("quality measured in the metric of %s (each tet mapped by M^1/2)\n", field_.name.c_str());
-    std::printf("%-22s %7s %7s %7s %7s %7s %6s %6s %6s %6s %6s %6s %4s %9s %7s\n", "chain", "verts",
+    std::printf("%-22s %7s %7s %7s %7s %7s %6s %6s %6s %6s %6s %6s %4s %9s %7s%s\n", "chain", "verts",
                 "tets", "th_min", "th_max", "mean_mn", "<10", "<20", "<30", "<40", "g_min",
-                "g_mean", "inv", "opt_s", "/p+e");
+                "g_mean", "inv", "opt_s", "/p+e", boundary_distance_ ? "  hd/hd0" : "");
     for(const Chain_result& r : results) {
       const GSM::Mesh_quality_statistics& q = r.quality;
       char ratio[32] = "-";
       if(perturb_exude_time > 0)
         std::snprintf(ratio, sizeof ratio, "%.2f", r.opt_time_s / perturb_exude_time);
-      std::printf("%-22s %7zu %7zu %7.2f %7.2f %7.2f %6zu %6zu %6zu %6zu %6.3f %6.3f %4zu %9.3f %7s\n",
+      char distance[32] = "";
+      if(r.boundary_distance >= 0 && initial_boundary_distance_ > 0)
+        std::snprintf(distance, sizeof distance, "  %6.3f", r.boundary_distance / initial_boundary_distance_);
+      std::printf("%-22s %7zu %7zu %7.2f %7.2f %7.2f %6zu %6zu %6zu %6zu %6.3f %6.3f %4zu %9.3f %7s%s\n",
                   r.chain.c_str(), q.number_of_vertices, q.number_of_cells, q.min_dihedral_angle,
                   q.max_dihedral_angle, q.mean_min_dihedral_angle, q.n_min_dihedral_below[0],
                   q.n_min_dihedral_below[1], q.n_min_dihedral_below[2], q.n_min_dihedral_below[3],
                   q.min_radius_ratio, q.mean_radius_ratio, q.number_of_inverted_cells, r.opt_time_s,
-                  ratio);
+                  ratio, distance);
     }
     std::fflush(stdout);
   }
@@ -332,6 +346,8 @@ private:
   const MeshDomain& domain_;
   double domain_volume_;
   Target_field field_;
+  std::function<double(const C3T3&)> boundary_distance_;
+  double initial_boundary_distance_ = -1;
   C3T3 initial_;
   double edge_size_ = 0;
   double mesh_time_s_ = 0;

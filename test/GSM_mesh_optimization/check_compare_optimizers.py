@@ -151,11 +151,18 @@ def main():
               "sphere: perturb+exude lifts the min dihedral angle")
         check(sphere["perturb+exude"]["n_min_dih_lt10"] == 0, "sphere: perturb+exude removes tets under 10 deg")
     fandisk = check_run("fandisk", [os.path.join(DATA, "fandisk.off"), "--features-angle", "60"], 2500,
-                        ["init", "odt", "perturb+exude"])
+                        ["init", "odt", "perturb+exude", "gsm"])
     if fandisk:
         check(fandisk["init"]["theta_min"] < 5, "fandisk: the raw mesh has slivers")
         check(fandisk["perturb+exude"]["theta_min"] > fandisk["init"]["theta_min"] + 5,
               "fandisk: perturb+exude lifts the min dihedral angle")
+        # the boundary's distance to the input surface is measured (and, for the
+        # chains that keep the boundary, unchanged)
+        hd0 = fandisk["init"]["hausdorff_to_input"]
+        check(hd0 > 0, f"fandisk: Hausdorff distance of the initial boundary {hd0}")
+        check(fandisk["odt"]["hausdorff_to_input"] > 0, "fandisk: Hausdorff distance after odt")
+        check(fandisk["gsm"]["n_min_dih_lt20"] < fandisk["perturb+exude"]["n_min_dih_lt20"],
+              "fandisk: gsm leaves fewer tets under 20 deg than perturb+exude")
 
     cube = open(os.path.join(DATA, "cube.off")).read()
     lines = cube.split("\n")

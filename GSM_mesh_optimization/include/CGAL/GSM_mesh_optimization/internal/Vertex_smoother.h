@@ -305,7 +305,10 @@ private:
   // accepted only on the vertex's own patch
   bool project_on_surface(const Ring& r, Bare_point& p) const
   {
-    const double h = r.max_neighbor_distance;
+    // as long as the move: the surface is that close to the tangent plane over the
+    // move, and a longer segment could reach across a thin part to the other side
+    const double h = (std::min)(r.max_neighbor_distance,
+                                (Energy::to_eigen(p) - energy_.position(r.v)).norm());
     const Vector_3 n(r.normal[0] * h, r.normal[1] * h, r.normal[2] * h);
     const Segment_3 s(p - n, p + n);
     const typename MeshDomain::Intersection i = domain_->construct_intersection_object()(s);
