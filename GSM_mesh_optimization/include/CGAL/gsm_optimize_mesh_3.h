@@ -118,6 +118,8 @@ gsm_optimize(C3T3& c3t3, const MeshDomain* domain, bool boundary_fixed, const Na
   options.max_rounds = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), 50);
   options.time_limit = choose_parameter(get_parameter(np, CGAL::internal_np::maximum_running_time), 0.);
   options.do_flip = choose_parameter(get_parameter(np, CGAL::internal_np::do_flip), true);
+  options.do_split = choose_parameter(get_parameter(np, GSM::internal_np::split_edges), true);
+  options.sliver_bound = choose_parameter(get_parameter(np, GSM::internal_np::sliver_bound), 30.);
   options.verbose = choose_parameter(get_parameter(np, CGAL::internal_np::verbose), false);
   options.convergence =
       choose_parameter(get_parameter(np, GSM::internal_np::convergence_threshold), 1e-4);
@@ -126,9 +128,10 @@ gsm_optimize(C3T3& c3t3, const MeshDomain* domain, bool boundary_fixed, const Na
   options.energy = choose_parameter(get_parameter(np, GSM::internal_np::energy),
                                     GSM::Shape_matching_energy::GSM);
   const int threads = choose_parameter(get_parameter(np, GSM::internal_np::number_of_threads), 0);
-  if(options.max_rounds < 0 || options.time_limit < 0 || !(options.convergence >= 0) || threads < 0)
-    throw std::invalid_argument("GSM: negative iteration count, time limit, "
-                                "convergence threshold or thread count");
+  if(options.max_rounds < 0 || options.time_limit < 0 || !(options.convergence >= 0) || threads < 0 ||
+     !(options.sliver_bound >= 0 && options.sliver_bound < 70.5))
+    throw std::invalid_argument("GSM: negative iteration count, time limit, convergence threshold "
+                                "or thread count, or a sliver bound outside [0, 70.5) degrees");
 
   auto visitor = get_parameter(np, CGAL::internal_np::visitor);
   if constexpr(!std::is_same<decltype(visitor), CGAL::internal_np::Param_not_found>::value)
@@ -172,6 +175,15 @@ gsm_optimize(C3T3& c3t3, const MeshDomain* domain, bool boundary_fixed, const Na
  * of the cells, so that the shape of every tetrahedron comes close to the
  * regular tetrahedron of the target size (dissertation ch. 3). Slivers have a
  * huge GSM energy, so they are removed first.
+ *
+ * Once the rounds have converged, a polishing stage lifts the cells whose
+ * smallest dihedral angle is still under `sliver_bound` (typically next to the
+ * surface, where vertices only slide): their vertices move up the gradient of
+ * the smallest angle of their star, and, if that is not enough, one of their
+ * interior edges is split by a new interior vertex when that raises the
+ * smallest angle around the edge. Polishing trades a little energy (the new
+ * cells are smaller than the target) for the worst angles; `split_edges(false)`
+ * keeps the vertex set, `sliver_bound(0)` skips the stage.
  *
  * It is meant as the final stage after `make_mesh_3()` (with or without Lloyd or
  * ODT), in place of `perturb_mesh_3()` and `exude_mesh_3()`. Vertex moves and
@@ -223,6 +235,18 @@ gsm_optimize(C3T3& c3t3, const MeshDomain* domain, bool boundary_fixed, const Na
  *     \cgalParamType{bool}
  *     \cgalParamDefault{false}
  *   \cgalParamNEnd
+ *   \cgalParamNBegin{GSM_mesh_optimization::parameters::sliver_bound}
+ *     \cgalParamDescription{the smallest dihedral angle, in degrees, sought by the final polishing
+ *       (in the metric, if one is given); 0 skips the polishing}
+ *     \cgalParamType{double, in [0, 70.5)}
+ *     \cgalParamDefault{30}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{GSM_mesh_optimization::parameters::split_edges}
+ *     \cgalParamDescription{whether the polishing may split interior edges of the cells under the
+ *       sliver bound, adding interior vertices (at most 10% of the vertex count)}
+ *     \cgalParamType{bool}
+ *     \cgalParamDefault{true}
+ *   \cgalParamNEnd
  *   \cgalParamNBegin{GSM_mesh_optimization::parameters::sizing_field}
  *     \cgalParamDescription{the relative target edge length `h(p)` (adaptive meshing): cells are
  *       measured after scaling by `1/h`. Only the variation of `h` matters: it is multiplied by the
@@ -252,8 +276,9 @@ gsm_optimize(C3T3& c3t3, const MeshDomain* domain, bool boundary_fixed, const Na
  *     \cgalParamDefault{0}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{visitor}
- *     \cgalParamDescription{called after each round with its `GSM_mesh_optimization::Round_report`
- *       (mean energy, min dihedral angle, moves, flips, time)}
+ *     \cgalParamDescription{called after each round, and each polishing round, with its
+ *       `GSM_mesh_optimization::Round_report` (mean energy, min dihedral angle, moves, flips,
+ *       splits, time)}
  *     \cgalParamType{a callable `void(const GSM_mesh_optimization::Round_report&)`}
  *     \cgalParamDefault{none}
  *   \cgalParamNEnd

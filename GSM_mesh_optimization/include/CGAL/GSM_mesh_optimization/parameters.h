@@ -27,6 +27,8 @@ enum sizing_field_t { sizing_field };
 enum metric_field_t { metric_field };
 enum convergence_threshold_t { convergence_threshold };
 enum number_of_threads_t { number_of_threads };
+enum split_edges_t { split_edges };
+enum sliver_bound_t { sliver_bound };
 
 } // namespace internal_np
 
@@ -44,6 +46,10 @@ CGAL_VVM_ADD_NAMED_PARAMETER(metric_field)
 CGAL_VVM_ADD_NAMED_PARAMETER(convergence_threshold)
 /// `int`: the number of threads of the vertex sweeps (default 0: TBB's choice)
 CGAL_VVM_ADD_NAMED_PARAMETER(number_of_threads)
+/// `double`: the smallest dihedral angle, in degrees, that the final polishing seeks (default 30; 0: no polishing)
+CGAL_VVM_ADD_NAMED_PARAMETER(sliver_bound)
+/// `bool`: whether the final polishing may split interior edges, adding vertices (default `true`)
+CGAL_VVM_ADD_NAMED_PARAMETER(split_edges)
 
 } // namespace parameters
 } // namespace GSM_mesh_optimization

@@ -3,11 +3,13 @@
 //
 // The GSM optimization loop (dissertation Alg. 1, after the initial mesh):
 // rounds of vertex smoothing, worst vertices first, and energy-guided flips,
-// until convergence, the round limit or the time limit.
+// until convergence, the round limit or the time limit; then the polishing of
+// the cells still under the sliver bound (Sliver_polisher.h).
 
 #ifndef CGAL_GSM_MESH_OPTIMIZATION_INTERNAL_GSM_OPTIMIZER_H
 #define CGAL_GSM_MESH_OPTIMIZATION_INTERNAL_GSM_OPTIMIZER_H
 
+#include <CGAL/GSM_mesh_optimization/internal/Sliver_polisher.h>
 #include <CGAL/GSM_mesh_optimization/internal/Energy_guided_flips.h>
 #include <CGAL/GSM_mesh_optimization/internal/Mesh_energy.h>
 #include <CGAL/GSM_mesh_optimization/internal/Vertex_smoother.h>
@@ -20,6 +22,7 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <array>
 #include <functional>
 #include <iostream>
 #include <unordered_map>
@@ -40,6 +43,9 @@ struct Round_report
   double min_dihedral_angle = 0; ///< degrees, over the cells in the complex
   std::size_t number_of_moves = 0; ///< vertices moved in this round
   std::size_t number_of_flips = 0; ///< flips done in this round
+  std::size_t number_of_splits = 0; ///< edges split in this round (new vertices)
+  /// a round of the final polishing, which lifts the worst cells and may raise the energy
+  bool is_polishing = false;
   double elapsed_time = 0;   ///< seconds since the start
 };
 
@@ -51,6 +57,8 @@ struct GSM_options
   double time_limit = 0; // seconds; 0: none
   double convergence = 1e-4;
   bool do_flip = true;
+  double sliver_bound = 30; // degrees; 0: no polishing
+  bool do_split = true;
   bool freeze_boundary = false;
   bool verbose = false;
   Shape_matching_energy energy = Shape_matching_energy::GSM;
@@ -85,7 +93,9 @@ public:
     if(options_.verbose)
       std::cerr << "GSM: " << count << " cells, mean energy " << previous_mean << "\n";
 
-    for(int round = 1; round <= options_.max_rounds; ++round) {
+    Mesh_optimization_return_code result = MAX_ITERATION_NUMBER_REACHED;
+    int round = 1;
+    for(; round <= options_.max_rounds; ++round) {
       Round_report report;
       report.round = round;
       const double smoothing_start = timer.time();
@@ -103,27 +113,64 @@ public:
       count = total.second;
       report.energy = sum / double(count);
       report.elapsed_time = timer.time();
-      if(options_.visitor || options_.verbose)
-        report.min_dihedral_angle = mesh_quality_statistics(c3t3_).min_dihedral_angle;
-      if(options_.verbose)
-        std::cerr << "GSM round " << round << ": mean energy " << report.energy << ", min dihedral "
-                  << report.min_dihedral_angle << ", " << report.number_of_moves << " moves, "
-                  << report.number_of_flips << " flips, " << report.elapsed_time << " s (smoothing "
-                  << flips_start - smoothing_start << " s, flips " << report.elapsed_time - flips_start
-                  << " s)\n";
-      if(options_.visitor) options_.visitor(report);
+      notify(report, flips_start - smoothing_start, report.elapsed_time - flips_start);
 
       if(time_is_up(timer)) return TIME_LIMIT_REACHED;
       const double decrease = (previous_mean - report.energy) / previous_mean;
       previous_mean = report.energy;
-      if(report.number_of_moves == 0 && report.number_of_flips == 0) return CANT_IMPROVE_ANYMORE;
-      if(decrease < options_.convergence) return CONVERGENCE_REACHED;
+      if(report.number_of_moves == 0 && report.number_of_flips == 0) {
+        result = CANT_IMPROVE_ANYMORE;
+        break;
+      }
+      if(decrease < options_.convergence) {
+        result = CONVERGENCE_REACHED;
+        break;
+      }
     }
-    return MAX_ITERATION_NUMBER_REACHED;
+    if(options_.sliver_bound > 0) polish((std::min)(round, options_.max_rounds), sum, count, timer);
+    return time_is_up(timer) ? TIME_LIMIT_REACHED : result;
   }
 
 private:
   static constexpr int max_flip_passes = 5;
+  static constexpr int max_polishing_passes = 10;
+
+  // rounds of the final stage, numbered on from the last round `round`, until one changes nothing
+  void polish(int round, double& sum, std::size_t& count, const CGAL::Real_timer& timer)
+  {
+    Edge_split<C3T3> splits(c3t3_, energy_, sum, count);
+    Sliver_polisher<C3T3, MeshDomain> polisher(c3t3_, energy_, smoother_, splits, options_.sliver_bound,
+                                               options_.do_split);
+    for(int pass = 0; pass < max_polishing_passes && !time_is_up(timer); ++pass) {
+      const double start = timer.time();
+      const auto done = polisher.polish_pass([&]() { return time_is_up(timer); });
+      Round_report report;
+      report.round = round + pass + 1;
+      report.is_polishing = true;
+      report.number_of_moves = done.moves;
+      report.number_of_splits = done.splits;
+      const auto total = energy_.total();
+      sum = total.first;
+      count = total.second;
+      report.energy = sum / double(count);
+      report.elapsed_time = timer.time();
+      notify(report, report.elapsed_time - start, 0);
+      if(done.moves == 0 && done.splits == 0) break;
+    }
+  }
+
+  void notify(Round_report& report, double smoothing_time, double flip_time) const
+  {
+    if(options_.visitor || options_.verbose)
+      report.min_dihedral_angle = mesh_quality_statistics(c3t3_).min_dihedral_angle;
+    if(options_.verbose)
+      std::cerr << "GSM " << (report.is_polishing ? "polishing" : "round") << " " << report.round
+                << ": mean energy " << report.energy << ", min dihedral " << report.min_dihedral_angle << ", "
+                << report.number_of_moves << " moves, " << report.number_of_flips << " flips, "
+                << report.number_of_splits << " splits, " << report.elapsed_time << " s (smoothing "
+                << smoothing_time << " s, flips " << flip_time << " s)\n";
+    if(options_.visitor) options_.visitor(report);
+  }
 
   bool time_is_up(const CGAL::Real_timer& timer) const
   {

@@ -16,10 +16,23 @@
 #include <Eigen/Core>
 
 #include <array>
+#include <type_traits>
 
 namespace CGAL {
 namespace GSM_mesh_optimization {
 namespace internal {
+
+/// moves the vertex `v` of `tr` to `p`; if the points are weighted, keeps its
+/// weight, or gives it weight 0 if it is new
+template <class Tr>
+void set_bare_point(Tr& tr, const typename Tr::Vertex_handle& v, const typename Tr::Geom_traits::Point_3& p,
+                    bool is_new = false)
+{
+  if constexpr(std::is_same<typename Tr::Point, typename Tr::Geom_traits::Point_3>::value)
+    v->set_point(p);
+  else
+    v->set_point(typename Tr::Point(p, is_new ? 0 : tr.point(v).weight()));
+}
 
 template <class C3T3>
 class Mesh_energy
@@ -53,6 +66,28 @@ public:
     }
     const Eigen::Matrix3d B = metric_(0.25 * (p0 + p1 + p2 + p3));
     return tetrahedron_energy(energy_, B * p0, B * p1, B * p2, B * p3);
+  }
+
+  /// smallest dihedral angle, in degrees, of the tetrahedron mapped by B at its centroid
+  double min_dihedral_angle(const Eigen::Vector3d& p0, const Eigen::Vector3d& p1, const Eigen::Vector3d& p2,
+                            const Eigen::Vector3d& p3) const
+  {
+    const Eigen::Matrix3d B = metric_(0.25 * (p0 + p1 + p2 + p3));
+    return tetrahedron_quality({{B * p0, B * p1, B * p2, B * p3}}).min_dihedral_angle();
+  }
+
+  /// the same for cell `c` with its vertex `v` at `x`
+  double min_dihedral_angle(const Cell_handle& c, const Vertex_handle& v, const Eigen::Vector3d& x) const
+  {
+    std::array<Eigen::Vector3d, 4> p;
+    for(int i = 0; i < 4; ++i) p[i] = c->vertex(i) == v ? x : position(c->vertex(i));
+    return min_dihedral_angle(p[0], p[1], p[2], p[3]);
+  }
+
+  double min_dihedral_angle(const Cell_handle& c) const
+  {
+    return min_dihedral_angle(position(c->vertex(0)), position(c->vertex(1)), position(c->vertex(2)),
+                              position(c->vertex(3)));
   }
 
   double cell(const Cell_handle& c) const

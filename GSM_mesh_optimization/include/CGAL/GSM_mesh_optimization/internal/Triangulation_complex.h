@@ -77,6 +77,9 @@ public:
   void remove_from_complex(const Cell_handle&) {}
   void add_to_complex(const Facet&, const Surface_patch_index&) {}
   void remove_from_complex(const Facet&) {}
+  // a vertex inserted by an edge split is interior: not a hull vertex
+  void set_dimension(const Vertex_handle&, int) {}
+  void set_index(const Vertex_handle&, const Subdomain_index&) {}
 
 private:
   Triangulation& tr_;

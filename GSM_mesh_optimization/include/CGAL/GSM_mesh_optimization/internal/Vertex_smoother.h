@@ -43,7 +43,6 @@ public:
   typedef typename GT::Point_3 Bare_point;
   typedef typename GT::Vector_3 Vector_3;
   typedef typename GT::Segment_3 Segment_3;
-  typedef typename Tr::Point Weighted_point;
   typedef typename Tr::Vertex_handle Vertex_handle;
   typedef typename Tr::Cell_handle Cell_handle;
   typedef typename Tr::Facet Facet;
@@ -234,23 +233,11 @@ public:
     return true;
   }
 
-private:
-  static constexpr int max_backtracking_steps = 12;
+  /// moves the vertex `v` to `p`
+  void move(const Vertex_handle& v, const Bare_point& p) const { set_bare_point(tr_, v, p); }
 
-  Bare_point bare(const Vertex_handle& v) const
-  {
-    return tr_.geom_traits().construct_point_3_object()(tr_.point(v));
-  }
-
-  void move(const Vertex_handle& v, const Bare_point& p) const
-  {
-    if constexpr(std::is_same<Weighted_point, Bare_point>::value)
-      v->set_point(p);
-    else
-      v->set_point(Weighted_point(p, tr_.point(v).weight()));
-  }
-
-  // the point the vertex of `r` would take for the unconstrained target `x`
+  /// the point the vertex of `r` would take for the unconstrained target `x`: `x` itself,
+  /// or its projection on the vertex's surface patch or curve; false if there is none
   bool candidate(const Ring& r, const Eigen::Vector3d& x, Bare_point& p) const
   {
     p = Bare_point(x[0], x[1], x[2]);
@@ -261,6 +248,25 @@ private:
       if(r.dimension == 2) return project_on_surface(r, p);
       return project_on_curve(r, p);
     }
+  }
+
+  /// the part of the direction `d` along which the vertex of `r` may move
+  Eigen::Vector3d tangential(const Ring& r, const Eigen::Vector3d& d) const
+  {
+    if(r.dimension == 2) return d - r.normal.dot(d) * r.normal;
+    if(r.dimension == 1) {
+      const Eigen::Vector3d t = curve_tangent(r);
+      return t.dot(d) * t;
+    }
+    return d;
+  }
+
+private:
+  static constexpr int max_backtracking_steps = 12;
+
+  Bare_point bare(const Vertex_handle& v) const
+  {
+    return tr_.geom_traits().construct_point_3_object()(tr_.point(v));
   }
 
   // --- surface vertices -------------------------------------------------------

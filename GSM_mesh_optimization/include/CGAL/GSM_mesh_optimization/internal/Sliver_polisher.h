@@ -1,0 +1,173 @@
+// Copyright (c) 2026 VVM contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The final stage of GSM: lifting the cells whose smallest dihedral angle is
+// still under the sliver bound once the energy rounds have converged. The GSM
+// energy of a cell mixes shape and size, and its minimum over a vertex's star
+// is a compromise that can keep one poor cell, typically next to the surface,
+// where vertices only slide. Here the objective is the worst cell itself:
+//
+// - a vertex of a cell under the bound moves up the gradient of the smallest
+//   dihedral angle of its star (measured in the metric), within its degrees of
+//   freedom and with the smoother's projections and validity checks, when that
+//   raises the smallest angle of its star (max-min smoothing, as in Freitag and
+//   Ollivier-Gooch 1997);
+// - a cell that no move lifts gets an interior edge split (Edge_split.h) when the
+//   smallest angle of the new cells beats that of the old ones.
+//
+// Both raise the worst angle and may raise the energy a little: this stage runs
+// after the rounds whose energy never increases.
+
+#ifndef CGAL_GSM_MESH_OPTIMIZATION_INTERNAL_SLIVER_POLISHER_H
+#define CGAL_GSM_MESH_OPTIMIZATION_INTERNAL_SLIVER_POLISHER_H
+
+#include <CGAL/GSM_mesh_optimization/internal/Edge_split.h>
+#include <CGAL/GSM_mesh_optimization/internal/Vertex_smoother.h>
+
+#include <algorithm>
+#include <array>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace GSM_mesh_optimization {
+namespace internal {
+
+template <class C3T3, class MeshDomain>
+class Sliver_polisher
+{
+  typedef typename C3T3::Triangulation Tr;
+  typedef typename Tr::Vertex_handle Vertex_handle;
+  typedef typename Tr::Cell_handle Cell_handle;
+  typedef Vertex_smoother<C3T3, MeshDomain> Smoother;
+  typedef typename Smoother::Ring Ring;
+  typedef typename Smoother::Bare_point Bare_point;
+  typedef Mesh_energy<C3T3> Energy;
+
+public:
+  struct Counts
+  {
+    std::size_t moves = 0, splits = 0;
+  };
+
+  /// `bound`: the smallest dihedral angle sought, in degrees
+  Sliver_polisher(C3T3& c3t3, const Energy& energy, const Smoother& smoother, Edge_split<C3T3>& splits,
+                  double bound, bool do_split)
+    : c3t3_(c3t3), tr_(c3t3.triangulation()), energy_(energy), smoother_(smoother), splits_(splits),
+      bound_(bound), do_split_(do_split),
+      split_budget_(std::size_t(max_split_fraction * double(c3t3.triangulation().number_of_vertices())))
+  {}
+
+  /// one pass: the vertices of the cells under the bound, worst first, then the
+  /// splits of the cells still under it; it ends early when `stop()` says so
+  template <class Stop>
+  Counts polish_pass(const Stop& stop)
+  {
+    Counts done;
+    std::vector<std::pair<double, Vertex_handle>> vertices;
+    for(const auto& b : bad_cells())
+      for(const Vertex_handle& v : b.second) vertices.push_back({b.first, v});
+    // stable, on the angle only: handles compare by address in some triangulations
+    std::stable_sort(vertices.begin(), vertices.end(),
+                     [](const auto& x, const auto& y) { return x.first < y.first; });
+    std::vector<Vertex_handle> seen;
+    Ring ring;
+    for(const auto& w : vertices) {
+      if(stop()) return done;
+      const Vertex_handle v = w.second;
+      if(std::find(seen.begin(), seen.end(), v) != seen.end()) continue;
+      seen.push_back(v);
+      if(!smoother_.is_movable(v)) continue;
+      for(int k = 0; k < max_moves_per_vertex; ++k) {
+        if(!smoother_.make_ring(v, ring) || !lift(ring)) break;
+        ++done.moves;
+      }
+    }
+    if(!do_split_) return done;
+    for(const auto& b : bad_cells()) {
+      if(stop()) return done;
+      Cell_handle c; // splits replace cells: find each again
+      const auto& t = b.second;
+      int i, j, k, l;
+      if(split_budget_ == 0) break;
+      if(tr_.is_cell(t[0], t[1], t[2], t[3], c, i, j, k, l) && splits_.try_split_cell(c)) {
+        ++done.splits;
+        --split_budget_;
+      }
+    }
+    return done;
+  }
+
+private:
+  static constexpr int max_moves_per_vertex = 4;
+  /// at most this fraction of the vertex count is added: a mesh far from the bound
+  /// everywhere (such as an isotropic mesh under a strongly anisotropic metric) needs
+  /// remeshing, not splits
+  static constexpr double max_split_fraction = 0.1;
+  static constexpr int max_backtracking_steps = 8;
+
+  // the cells in the complex under the bound, worst first, with their vertices
+  std::vector<std::pair<double, std::array<Vertex_handle, 4>>> bad_cells() const
+  {
+    std::vector<std::pair<double, std::array<Vertex_handle, 4>>> bad;
+    for(auto c = c3t3_.cells_in_complex_begin(); c != c3t3_.cells_in_complex_end(); ++c) {
+      const double q = energy_.min_dihedral_angle(c);
+      if(q < bound_) bad.push_back({q, {{c->vertex(0), c->vertex(1), c->vertex(2), c->vertex(3)}}});
+    }
+    std::stable_sort(bad.begin(), bad.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+    return bad;
+  }
+
+  // smallest dihedral angle of the star of the vertex of `r` placed at `x`
+  double star_quality(const Ring& r, const Eigen::Vector3d& x) const
+  {
+    double q = 180;
+    for(const Cell_handle& c : r.complex_cells) q = (std::min)(q, energy_.min_dihedral_angle(c, r.v, x));
+    return q;
+  }
+
+  // moves the vertex of `r` up the gradient of its star's smallest angle; true if that raised it
+  bool lift(const Ring& r) const
+  {
+    const Eigen::Vector3d x0 = energy_.position(r.v);
+    const double q0 = star_quality(r, x0);
+    if(!(q0 < bound_)) return false;
+    // central differences: the smallest angle is only piecewise smooth
+    const double h = 1e-4 * r.max_neighbor_distance;
+    Eigen::Vector3d g;
+    for(int k = 0; k < 3; ++k) {
+      Eigen::Vector3d e = Eigen::Vector3d::Zero();
+      e[k] = h;
+      g[k] = (star_quality(r, x0 + e) - star_quality(r, x0 - e)) / (2 * h);
+    }
+    Eigen::Vector3d d = smoother_.tangential(r, g);
+    const double n = d.norm();
+    if(!(n > 0) || !std::isfinite(n)) return false;
+    d /= n;
+    double alpha = 0.2 * r.max_neighbor_distance;
+    for(int k = 0; k < max_backtracking_steps; ++k, alpha *= 0.5) {
+      Bare_point p;
+      if(!smoother_.candidate(r, x0 + alpha * d, p) || !smoother_.is_valid_position(r, p)) continue;
+      if(star_quality(r, Energy::to_eigen(p)) > q0 + 1e-3) {
+        smoother_.move(r.v, p);
+        return true;
+      }
+    }
+    return false;
+  }
+
+  C3T3& c3t3_;
+  Tr& tr_;
+  const Energy& energy_;
+  const Smoother& smoother_;
+  Edge_split<C3T3>& splits_;
+  double bound_;
+  bool do_split_;
+  std::size_t split_budget_;
+};
+
+} // namespace internal
+} // namespace GSM_mesh_optimization
+} // namespace CGAL
+
+#endif // CGAL_GSM_MESH_OPTIMIZATION_INTERNAL_SLIVER_POLISHER_H
