@@ -196,9 +196,13 @@ gsm_optimize(C3T3& c3t3, const MeshDomain* domain, bool boundary_fixed, const Na
  * (`MeshDomain::Construct_intersection` along the normal; an AABB tree for the
  * polyhedral domains), staying on their surface patch; vertices on feature
  * curves move along the curve (`construct_point_on_curve()`); corners never
- * move. No cell is ever inverted. Flips never cross a surface facet, a feature
- * edge or a subdomain boundary; subdomain and surface-patch indices and the
- * complex's counters are kept.
+ * move. A boundary vertex moves only where its surface facets stray from the
+ * surface (measured along their normals with `Construct_intersection`) no
+ * further than the initial mesh's facets around it did, or than most of them,
+ * so that the boundary stays about as close to the surface. No cell is ever
+ * inverted. Flips never cross a surface facet, a feature edge or a subdomain
+ * boundary; subdomain and surface-patch indices and the complex's counters are
+ * kept.
  *
  * \tparam C3T3 a `Mesh_complex_3_in_triangulation_3`
  * \tparam MeshDomain a model of `MeshDomain_3` (or `MeshDomainWithFeatures_3`)

@@ -136,18 +136,30 @@ public:
   /// if that lowers the mean energy
   bool try_peel_boundary_cell(const Cell_handle& c)
   {
+    return try_peel_boundary_cell(c, [this, &c](const Facet&, const Facet&) {
+      return is_flat(c) && lowers_mean(energy_.cell(c), 0., -1);
+    });
+  }
+
+  /// the same peel of a cell with two surface facets of one patch, if `accept(f, g)`
+  /// says yes for its two other facets, the new surface facets
+  template <class Accept>
+  bool try_peel_boundary_cell(const Cell_handle& c, const Accept& accept)
+  {
     if constexpr(Is_triangulation_complex<C3T3>::value) {
       CGAL_USE(c);
+      CGAL_USE(accept);
       return false; // a bare triangulation's boundary is its convex hull: fixed
     } else
-      return peel_boundary_cell(c);
+      return peel_boundary_cell(c, accept);
   }
 
   /// keeps the surface where it is: no boundary peel
   void set_boundary_fixed(bool fixed) { boundary_fixed_ = fixed; }
 
 private:
-  bool peel_boundary_cell(const Cell_handle& c)
+  template <class Accept>
+  bool peel_boundary_cell(const Cell_handle& c, const Accept& accept)
   {
     int in[2], out[2], n_in = 0, n_out = 0;
     for(int i = 0; i < 4; ++i) {
@@ -174,10 +186,8 @@ private:
     do
       if(c3t3_.is_in_complex(*fc)) return false;
     while(++fc != fdone);
-    // flat: the surface moves by the height of the cell, small next to its edges
-    if(!is_flat(c)) return false;
+    if(!accept(Facet(c, out[0]), Facet(c, out[1]))) return false;
     const double e = energy_.cell(c);
-    if(!lowers_mean(e, 0., -1)) return false;
 
     c3t3_.remove_from_complex(Facet(c, in[0]));
     c3t3_.remove_from_complex(Facet(c, in[1]));

@@ -42,7 +42,7 @@ struct Round_report
   double energy = 0;          ///< mean energy of the cells in the complex (eq. 3.9)
   double min_dihedral_angle = 0; ///< degrees, over the cells in the complex
   std::size_t number_of_moves = 0; ///< vertices moved in this round
-  std::size_t number_of_flips = 0; ///< flips done in this round
+  std::size_t number_of_flips = 0; ///< flips done in this round (in polishing: boundary peels)
   std::size_t number_of_splits = 0; ///< edges split in this round (new vertices)
   /// a round of the final polishing, which lifts the worst cells and may raise the energy
   bool is_polishing = false;
@@ -127,7 +127,7 @@ public:
         break;
       }
     }
-    if(options_.sliver_bound > 0) polish((std::min)(round, options_.max_rounds), sum, count, timer);
+    if(options_.sliver_bound > 0) polish((std::min)(round, options_.max_rounds), flips, sum, count, timer);
     return time_is_up(timer) ? TIME_LIMIT_REACHED : result;
   }
 
@@ -136,11 +136,12 @@ private:
   static constexpr int max_polishing_passes = 10;
 
   // rounds of the final stage, numbered on from the last round `round`, until one changes nothing
-  void polish(int round, double& sum, std::size_t& count, const CGAL::Real_timer& timer)
+  void polish(int round, Energy_guided_flips<C3T3>& flips, double& sum, std::size_t& count,
+              const CGAL::Real_timer& timer)
   {
     Edge_split<C3T3> splits(c3t3_, energy_, sum, count);
-    Sliver_polisher<C3T3, MeshDomain> polisher(c3t3_, energy_, smoother_, splits, options_.sliver_bound,
-                                               options_.do_split);
+    Sliver_polisher<C3T3, MeshDomain> polisher(c3t3_, energy_, smoother_, flips, splits, options_.sliver_bound,
+                                               options_.do_split, options_.freeze_boundary);
     for(int pass = 0; pass < max_polishing_passes && !time_is_up(timer); ++pass) {
       const double start = timer.time();
       const auto done = polisher.polish_pass([&]() { return time_is_up(timer); });
@@ -149,13 +150,14 @@ private:
       report.is_polishing = true;
       report.number_of_moves = done.moves;
       report.number_of_splits = done.splits;
+      report.number_of_flips = done.peels;
       const auto total = energy_.total();
       sum = total.first;
       count = total.second;
       report.energy = sum / double(count);
       report.elapsed_time = timer.time();
       notify(report, report.elapsed_time - start, 0);
-      if(done.moves == 0 && done.splits == 0) break;
+      if(done.moves == 0 && done.peels == 0 && done.splits == 0) break;
     }
   }
 

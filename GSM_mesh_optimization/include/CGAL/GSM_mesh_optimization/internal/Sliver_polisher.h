@@ -12,6 +12,9 @@
 //   freedom and with the smoother's projections and validity checks, when that
 //   raises the smallest angle of its star (max-min smoothing, as in Freitag and
 //   Ollivier-Gooch 1997);
+// - a cell with two surface facets of one patch is peeled off the complex (the
+//   boundary peel of Energy_guided_flips.h) when its two other facets stray from
+//   the surface no further than the boundary may (Boundary_fidelity.h);
 // - a cell that no move lifts gets an interior edge split (Edge_split.h) when the
 //   smallest angle of the new cells beats that of the old ones.
 //
@@ -22,6 +25,7 @@
 #define CGAL_GSM_MESH_OPTIMIZATION_INTERNAL_SLIVER_POLISHER_H
 
 #include <CGAL/GSM_mesh_optimization/internal/Edge_split.h>
+#include <CGAL/GSM_mesh_optimization/internal/Energy_guided_flips.h>
 #include <CGAL/GSM_mesh_optimization/internal/Vertex_smoother.h>
 
 #include <algorithm>
@@ -47,14 +51,14 @@ class Sliver_polisher
 public:
   struct Counts
   {
-    std::size_t moves = 0, splits = 0;
+    std::size_t moves = 0, peels = 0, splits = 0;
   };
 
   /// `bound`: the smallest dihedral angle sought, in degrees
-  Sliver_polisher(C3T3& c3t3, const Energy& energy, const Smoother& smoother, Edge_split<C3T3>& splits,
-                  double bound, bool do_split)
-    : c3t3_(c3t3), tr_(c3t3.triangulation()), energy_(energy), smoother_(smoother), splits_(splits),
-      bound_(bound), do_split_(do_split),
+  Sliver_polisher(C3T3& c3t3, const Energy& energy, const Smoother& smoother, Energy_guided_flips<C3T3>& flips,
+                  Edge_split<C3T3>& splits, double bound, bool do_split, bool boundary_fixed)
+    : c3t3_(c3t3), tr_(c3t3.triangulation()), energy_(energy), smoother_(smoother), flips_(flips), splits_(splits),
+      bound_(bound), do_split_(do_split), boundary_fixed_(boundary_fixed),
       split_budget_(std::size_t(max_split_fraction * double(c3t3.triangulation().number_of_vertices())))
   {}
 
@@ -83,6 +87,14 @@ public:
         ++done.moves;
       }
     }
+    if(!boundary_fixed_)
+      for(const auto& b : bad_cells()) {
+        if(stop()) return done;
+        Cell_handle c;
+        const auto& t = b.second;
+        int i, j, k, l;
+        if(tr_.is_cell(t[0], t[1], t[2], t[3], c, i, j, k, l) && peel(c)) ++done.peels;
+      }
     if(!do_split_) return done;
     for(const auto& b : bad_cells()) {
       if(stop()) return done;
@@ -118,6 +130,19 @@ private:
     return bad;
   }
 
+  // peels `c` if it has two surface facets of one patch and its two others are faithful
+  bool peel(const Cell_handle& c)
+  {
+    int surface = -1;
+    for(int i = 0; i < 4; ++i)
+      if(c3t3_.is_in_complex(c, i)) surface = i;
+    if(surface < 0) return false;
+    const auto patch = c3t3_.surface_patch_index(c, surface);
+    return flips_.try_peel_boundary_cell(c, [&](const typename Tr::Facet& f, const typename Tr::Facet& g) {
+      return smoother_.is_faithful(f, patch) && smoother_.is_faithful(g, patch);
+    });
+  }
+
   // smallest dihedral angle of the star of the vertex of `r` placed at `x`
   double star_quality(const Ring& r, const Eigen::Vector3d& x) const
   {
@@ -148,7 +173,7 @@ private:
     for(int k = 0; k < max_backtracking_steps; ++k, alpha *= 0.5) {
       Bare_point p;
       if(!smoother_.candidate(r, x0 + alpha * d, p) || !smoother_.is_valid_position(r, p)) continue;
-      if(star_quality(r, Energy::to_eigen(p)) > q0 + 1e-3) {
+      if(star_quality(r, Energy::to_eigen(p)) > q0 + 1e-3 && smoother_.keeps_boundary_faithful(r, p)) {
         smoother_.move(r.v, p);
         return true;
       }
@@ -160,9 +185,11 @@ private:
   Tr& tr_;
   const Energy& energy_;
   const Smoother& smoother_;
+  Energy_guided_flips<C3T3>& flips_;
   Edge_split<C3T3>& splits_;
   double bound_;
   bool do_split_;
+  bool boundary_fixed_;
   std::size_t split_budget_;
 };
 

@@ -7,7 +7,9 @@
 // kept only if no cell inverts (nor the convex hull stops being convex) and the
 // one-ring energy decreases. Surface vertices move in their tangent plane and
 // are projected back onto the domain's surface, on their own patch; feature
-// curve vertices move along their curve; corners never move.
+// curve vertices move along their curve; corners never move. A boundary vertex
+// moves only where its facets stray from the surface no further than the
+// initial mesh's did (Boundary_fidelity.h).
 //
 // Rings are built from a given star (the cells around the vertex) and a move
 // reads and writes only the ring, without the triangulation's traversal flags,
@@ -16,6 +18,7 @@
 #ifndef CGAL_GSM_MESH_OPTIMIZATION_INTERNAL_VERTEX_SMOOTHER_H
 #define CGAL_GSM_MESH_OPTIMIZATION_INTERNAL_VERTEX_SMOOTHER_H
 
+#include <CGAL/GSM_mesh_optimization/internal/Boundary_fidelity.h>
 #include <CGAL/GSM_mesh_optimization/internal/Mesh_energy.h>
 
 #include <CGAL/Mesh_3/Has_features.h>
@@ -25,7 +28,9 @@
 #include <Eigen/Core>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <optional>
 #include <tuple>
 #include <type_traits>
 #include <vector>
@@ -49,6 +54,7 @@ public:
   typedef typename C3T3::Surface_patch_index Surface_patch_index;
   typedef typename C3T3::Curve_index Curve_index;
   typedef Mesh_energy<C3T3> Energy;
+  typedef Boundary_fidelity<C3T3, MeshDomain> Fidelity;
 
   // A candidate vertex: where it is allowed to go and what its move is worth.
   struct Ring
@@ -57,6 +63,7 @@ public:
     int dimension = 3;
     std::vector<Cell_handle> finite_cells, complex_cells, infinite_cells;
     double max_neighbor_distance = 0;
+    std::vector<Facet> surface_facets;                // surface and curve vertices, each facet once
     Eigen::Vector3d normal = Eigen::Vector3d::Zero(); // surface vertices
     Surface_patch_index patch = Surface_patch_index();
     std::vector<Vertex_handle> curve_neighbors;       // feature-curve vertices
@@ -66,7 +73,10 @@ public:
   Vertex_smoother(C3T3& c3t3, const MeshDomain* domain, const Energy& energy, bool freeze_boundary)
     : c3t3_(c3t3), tr_(c3t3.triangulation()), domain_(domain), energy_(energy),
       freeze_boundary_(freeze_boundary)
-  {}
+  {
+    if constexpr(!std::is_void<MeshDomain>::value)
+      if(lowest_movable_dimension() < 3) fidelity_.emplace(c3t3, domain);
+  }
 
   /// lowest vertex dimension that may move (3: interior only)
   int lowest_movable_dimension() const
@@ -105,6 +115,7 @@ public:
           r.max_neighbor_distance = (std::max)(r.max_neighbor_distance, (energy_.position(c->vertex(i)) - x).norm());
     }
     if(r.complex_cells.empty()) return false;
+    if(r.dimension < 3) collect_surface_facets(r);
     if(r.dimension == 2) return surface_frame(r);
     if(r.dimension == 1) return curve_frame(r);
     return true;
@@ -190,7 +201,7 @@ public:
         const Eigen::Vector3d x = Energy::to_eigen(p);
         if(!is_valid_position(r, p)) continue;
         const double e = ring_energy(r, x);
-        if(e < e0 - tiny) {
+        if(e < e0 - tiny && keeps_boundary_faithful(r, p)) {
           move(r.v, p);
           energy_change = e - e0;
           return true;
@@ -261,12 +272,68 @@ public:
     return d;
   }
 
+  /// the facets of a boundary vertex at `p` stray no further from the surface than the initial ones
+  bool keeps_boundary_faithful(const Ring& r, const Bare_point& p) const
+  {
+    if constexpr(std::is_void<MeshDomain>::value)
+      return r.dimension == 3; // the boundary of a bare triangulation does not move
+    else {
+      if(r.dimension == 3) return true;
+      for(const Facet& f : r.surface_facets) {
+        typename Fidelity::Triangle t;
+        std::array<Vertex_handle, 3> vs;
+        for(int k = 0; k < 3; ++k) {
+          vs[k] = f.first->vertex((f.second + 1 + k) & 3);
+          t[k] = vs[k] == r.v ? p : bare(vs[k]);
+        }
+        if(!fidelity_->is_faithful(t, c3t3_.surface_patch_index(f), vs)) return false;
+      }
+      return true;
+    }
+  }
+
+  /// the facet `f`, on the patch `patch`, strays no further from the surface than
+  /// the initial facets around its vertices (for a change of the surface triangulation)
+  bool is_faithful(const Facet& f, const Surface_patch_index& patch) const
+  {
+    if constexpr(std::is_void<MeshDomain>::value)
+      return false; // the boundary of a bare triangulation does not change
+    else {
+      if(!fidelity_) return false;
+      typename Fidelity::Triangle t;
+      std::array<Vertex_handle, 3> vs;
+      for(int k = 0; k < 3; ++k) {
+        vs[k] = f.first->vertex((f.second + 1 + k) & 3);
+        t[k] = bare(vs[k]);
+      }
+      return fidelity_->is_faithful(t, patch, vs);
+    }
+  }
+
 private:
   static constexpr int max_backtracking_steps = 12;
 
   Bare_point bare(const Vertex_handle& v) const
   {
     return tr_.geom_traits().construct_point_3_object()(tr_.point(v));
+  }
+
+  // the surface facets around the vertex of `r`, each once, seen from the cell
+  // of larger subdomain index
+  void collect_surface_facets(Ring& r) const
+  {
+    for(const Cell_handle& c : r.finite_cells) {
+      const int iv = c->index(r.v);
+      for(int i = 0; i < 4; ++i) {
+        if(i == iv || !c3t3_.is_in_complex(c, i)) continue;
+        const Cell_handle m = c->neighbor(i);
+        if(!tr_.is_infinite(m)) {
+          const auto sc = c3t3_.subdomain_index(c), sm = c3t3_.subdomain_index(m);
+          if(sc < sm || (sc == sm && &*c < &*m)) continue;
+        }
+        r.surface_facets.push_back(Facet(c, i));
+      }
+    }
   }
 
   // --- surface vertices -------------------------------------------------------
@@ -276,30 +343,22 @@ private:
   bool surface_frame(Ring& r) const
   {
     bool has_patch = false;
-    for(const Cell_handle& c : r.finite_cells) {
-      const int iv = c->index(r.v);
-      for(int i = 0; i < 4; ++i) {
-        if(i == iv || !c3t3_.is_in_complex(c, i)) continue;
-        // each facet once, seen from the cell of larger subdomain index
-        const Cell_handle m = c->neighbor(i);
-        if(!tr_.is_infinite(m)) {
-          const auto sc = c3t3_.subdomain_index(c), sm = c3t3_.subdomain_index(m);
-          if(sc < sm || (sc == sm && &*c < &*m)) continue;
-        }
-        const Surface_patch_index patch = c3t3_.surface_patch_index(c, i);
-        if(!has_patch) {
-          r.patch = patch;
-          has_patch = true;
-        } else if(!(patch == r.patch))
-          return false; // on two patches: it sits on a feature the domain did not protect
-        const Eigen::Vector3d a = energy_.position(c->vertex((i + 1) & 3));
-        const Eigen::Vector3d b = energy_.position(c->vertex((i + 2) & 3));
-        const Eigen::Vector3d d = energy_.position(c->vertex((i + 3) & 3));
-        const Eigen::Vector3d inner = energy_.position(c->vertex(i));
-        Eigen::Vector3d n = (b - a).cross(d - a);
-        if(n.dot(inner - a) > 0) n = -n;
-        r.normal += n;
-      }
+    for(const Facet& f : r.surface_facets) {
+      const Cell_handle& c = f.first;
+      const int i = f.second;
+      const Surface_patch_index patch = c3t3_.surface_patch_index(c, i);
+      if(!has_patch) {
+        r.patch = patch;
+        has_patch = true;
+      } else if(!(patch == r.patch))
+        return false; // on two patches: it sits on a feature the domain did not protect
+      const Eigen::Vector3d a = energy_.position(c->vertex((i + 1) & 3));
+      const Eigen::Vector3d b = energy_.position(c->vertex((i + 2) & 3));
+      const Eigen::Vector3d d = energy_.position(c->vertex((i + 3) & 3));
+      const Eigen::Vector3d inner = energy_.position(c->vertex(i));
+      Eigen::Vector3d n = (b - a).cross(d - a);
+      if(n.dot(inner - a) > 0) n = -n;
+      r.normal += n;
     }
     const double len = r.normal.norm();
     if(!has_patch || !(len > 0)) return false;
@@ -380,6 +439,7 @@ private:
   const MeshDomain* domain_;
   const Energy& energy_;
   bool freeze_boundary_;
+  std::optional<Fidelity> fidelity_; // when the boundary may move
 };
 
 } // namespace internal

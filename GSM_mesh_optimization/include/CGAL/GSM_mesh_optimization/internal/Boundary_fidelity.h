@@ -1,0 +1,148 @@
+// Copyright (c) 2026 VVM contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// How far the boundary of the mesh may stray from the domain's surface.
+// Boundary vertices that move stay on the surface, but the facets between them
+// can cut deeper into it (or bulge further out), most of all across creases the
+// domain does not protect: the boundary's Hausdorff distance to the surface
+// grows. Both directions of it grow together, so one measure serves both.
+//
+// The deviation of a surface facet is the largest distance from points of a
+// grid on it to its own patch, along its normal, found with the domain's
+// `Construct_intersection` (any domain: polyhedral or implicit). A vertex's
+// bound is the largest deviation of its initial facets, or a floor: a high
+// quantile of the initial deviations (not their maximum: facets beside feature
+// edges can measure far more than they stray). A facet may stray as far as the
+// largest bound of its vertices. Everything is computed at the start; later
+// calls only read it and the domain, so they are thread-safe.
+
+#ifndef CGAL_GSM_MESH_OPTIMIZATION_INTERNAL_BOUNDARY_FIDELITY_H
+#define CGAL_GSM_MESH_OPTIMIZATION_INTERNAL_BOUNDARY_FIDELITY_H
+
+#include <CGAL/Kernel/global_functions.h>
+#include <CGAL/number_utils.h>
+#include <CGAL/squared_distance_3.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <tuple>
+#include <unordered_map>
+#include <vector>
+
+namespace CGAL {
+namespace GSM_mesh_optimization {
+namespace internal {
+
+template <class C3T3, class MeshDomain>
+class Boundary_fidelity
+{
+  typedef typename C3T3::Triangulation Tr;
+  typedef typename Tr::Geom_traits GT;
+  typedef typename GT::Point_3 Bare_point;
+  typedef typename GT::Vector_3 Vector_3;
+  typedef typename GT::Segment_3 Segment_3;
+  typedef typename Tr::Vertex_handle Vertex_handle;
+  typedef typename C3T3::Surface_patch_index Surface_patch_index;
+
+public:
+  typedef std::array<Bare_point, 3> Triangle;
+
+  /// the quantile of the initial deviations below which any facet may stray
+  static constexpr double floor_quantile = 0.95;
+  /// the grid of a facet: its edges split in this many parts, plus its centroid;
+  /// fine enough to catch a crease crossing the facet
+  static constexpr int grid_subdivisions = 4;
+
+  Boundary_fidelity(const C3T3& c3t3, const MeshDomain* domain) : domain_(domain)
+  {
+    const Tr& tr = c3t3.triangulation();
+    std::vector<double> deviations;
+    for(auto f = c3t3.facets_in_complex_begin(); f != c3t3.facets_in_complex_end(); ++f) {
+      Triangle t;
+      for(int k = 0; k < 3; ++k) t[k] = tr.geom_traits().construct_point_3_object()(tr.point(f->first, (f->second + 1 + k) & 3));
+      const double d = deviation(t, c3t3.surface_patch_index(*f));
+      deviations.push_back(d);
+      for(int k = 0; k < 3; ++k) {
+        double& b = vertex_bound_[f->first->vertex((f->second + 1 + k) & 3)];
+        b = (std::max)(b, d);
+      }
+    }
+    if(deviations.empty()) return;
+    const auto q = deviations.begin() + std::ptrdiff_t(floor_quantile * double(deviations.size() - 1));
+    std::nth_element(deviations.begin(), q, deviations.end());
+    floor_ = *q;
+  }
+
+  /// how far the facets around `v` may stray: as far as they did at the start, or the floor
+  double bound(const Vertex_handle& v) const
+  {
+    const auto it = vertex_bound_.find(v);
+    return it == vertex_bound_.end() ? floor_ : (std::max)(floor_, it->second);
+  }
+
+  /// whether the facet `t` of the patch `patch`, on the vertices `v`, strays no further than they allow
+  bool is_faithful(const Triangle& t, const Surface_patch_index& patch, const std::array<Vertex_handle, 3>& v) const
+  {
+    return deviation(t, patch) <= (std::max)({bound(v[0]), bound(v[1]), bound(v[2])});
+  }
+
+  /// the largest distance from the grid points of `t` to the patch `patch`
+  /// along the normal of `t`, within half its longest edge (far beyond a
+  /// chord's sag, short of the far side of thin parts); a point whose normal
+  /// line meets another patch first, or none (beside a feature edge), does not count
+  double deviation(const Triangle& t, const Surface_patch_index& patch) const
+  {
+    const Vector_3 n = CGAL::cross_product(t[1] - t[0], t[2] - t[0]);
+    const double area2 = CGAL::to_double(n.squared_length());
+    if(!(area2 > 0)) return 0;
+    double longest2 = 0;
+    for(int k = 0; k < 3; ++k)
+      longest2 = (std::max)(longest2, CGAL::to_double(CGAL::squared_distance(t[k], t[(k + 1) % 3])));
+    const Vector_3 reach = n * (0.5 * std::sqrt(longest2 / area2));
+    const int m = grid_subdivisions;
+    double d = distance_along(CGAL::centroid(t[0], t[1], t[2]), reach, patch);
+    for(int i = 0; i < m; ++i)
+      for(int j = 0; i + j <= m; ++j) {
+        const int k = m - i - j;
+        if(j == m || k == m) continue; // the vertices lie on the surface
+        d = (std::max)(d, distance_along(CGAL::barycenter(t[0], double(i) / m, t[1], double(j) / m, t[2], double(k) / m),
+                                         reach, patch));
+      }
+    return d;
+  }
+
+private:
+  // the domain returns any intersection of a segment: shrink it past each one
+  // found, down to the nearest (or give up after a few)
+  static constexpr int max_shrinks = 4;
+
+  // distance from `s` to the nearest intersection of the surface with the
+  // segment from `s - reach` to `s + reach`, if it lies on `patch`; else 0
+  double distance_along(const Bare_point& s, Vector_3 reach, const Surface_patch_index& patch) const
+  {
+    const Vector_3 unit = reach / std::sqrt(CGAL::to_double(reach.squared_length()));
+    double d = 0;
+    bool on_patch = false;
+    for(int k = 0; k < max_shrinks; ++k) {
+      const typename MeshDomain::Intersection i =
+          domain_->construct_intersection_object()(Segment_3(s - reach, s + reach));
+      if(std::get<2>(i) != 2) break;
+      d = std::sqrt(CGAL::to_double(CGAL::squared_distance(s, std::get<0>(i))));
+      on_patch = domain_->surface_patch_index(std::get<1>(i)) == patch;
+      if(!(d > 0)) break;
+      reach = unit * (0.99 * d);
+    }
+    return on_patch ? d : 0;
+  }
+
+  const MeshDomain* domain_;
+  std::unordered_map<Vertex_handle, double> vertex_bound_;
+  double floor_ = 0;
+};
+
+} // namespace internal
+} // namespace GSM_mesh_optimization
+} // namespace CGAL
+
+#endif // CGAL_GSM_MESH_OPTIMIZATION_INTERNAL_BOUNDARY_FIDELITY_H
