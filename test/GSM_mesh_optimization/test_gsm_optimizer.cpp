@@ -639,16 +639,28 @@ void test_sphere_run()
   VVM_CHECK(complex_is_valid(adaptive));
 }
 
+// a make_mesh_3 sphere with the uniform metric fitted to it and its energy sum
+struct Sphere_energy_fixture
+{
+  Implicit_c3t3 c3t3 = make_sphere_mesh(0.2);
+  GSM::internal::Metric_field metric =
+      GSM::internal::Metric_field::uniform(GSM::internal::estimated_edge_length(c3t3));
+  GSM::internal::Mesh_energy<Implicit_c3t3> energy{c3t3, metric, GSM::Shape_matching_energy::GSM};
+  double sum = 0;
+  std::size_t count = 0;
+
+  Sphere_energy_fixture() { std::tie(sum, count) = energy.total(); }
+};
+
 // flip passes alone on a make_mesh_3 sphere: edge and multi-face removals happen,
 // the complex stays valid, the running sum exact
 void test_flip_pass_on_sphere()
 {
-  Implicit_c3t3 c3t3 = make_sphere_mesh(0.2);
-  GSM::internal::Metric_field metric = GSM::internal::Metric_field::uniform(GSM::internal::estimated_edge_length(c3t3));
-  GSM::internal::Mesh_energy<Implicit_c3t3> energy(c3t3, metric, GSM::Shape_matching_energy::GSM);
-  double sum;
-  std::size_t count;
-  std::tie(sum, count) = energy.total();
+  Sphere_energy_fixture f;
+  Implicit_c3t3& c3t3 = f.c3t3;
+  auto& energy = f.energy;
+  double& sum = f.sum;
+  std::size_t& count = f.count;
   const double mean_before = sum / double(count);
   GSM::internal::Energy_guided_flips<Implicit_c3t3> flips(c3t3, energy, sum, count);
   GSM::internal::Flip_counts done;
@@ -682,12 +694,11 @@ void test_flip_pass_on_sphere()
 // edge; the complex stays valid with its counters, the running sum exact
 void test_edge_split_on_sphere()
 {
-  Implicit_c3t3 c3t3 = make_sphere_mesh(0.2);
-  GSM::internal::Metric_field metric = GSM::internal::Metric_field::uniform(GSM::internal::estimated_edge_length(c3t3));
-  GSM::internal::Mesh_energy<Implicit_c3t3> energy(c3t3, metric, GSM::Shape_matching_energy::GSM);
-  double sum;
-  std::size_t count;
-  std::tie(sum, count) = energy.total();
+  Sphere_energy_fixture f;
+  Implicit_c3t3& c3t3 = f.c3t3;
+  auto& energy = f.energy;
+  double& sum = f.sum;
+  std::size_t& count = f.count;
   GSM::internal::Edge_split<Implicit_c3t3> splits(c3t3, energy, sum, count);
   const GSM::Mesh_quality_statistics before = GSM::mesh_quality_statistics(c3t3);
   const std::size_t vertices_before = c3t3.triangulation().number_of_vertices();

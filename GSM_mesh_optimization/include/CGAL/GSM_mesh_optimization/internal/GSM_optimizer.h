@@ -133,7 +133,7 @@ public:
 
 private:
   static constexpr int max_flip_passes = 5;
-  static constexpr int max_polishing_passes = 10;
+  static constexpr int max_polishing_passes = 20;
 
   // rounds of the final stage, numbered on from the last round `round`, until one changes nothing
   void polish(int round, Energy_guided_flips<C3T3>& flips, double& sum, std::size_t& count,
