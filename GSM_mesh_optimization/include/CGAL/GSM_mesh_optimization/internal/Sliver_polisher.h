@@ -30,6 +30,7 @@
 
 #include <algorithm>
 #include <array>
+#include <unordered_set>
 #include <utility>
 #include <vector>
 
@@ -74,13 +75,12 @@ public:
     // stable, on the angle only: handles compare by address in some triangulations
     std::stable_sort(vertices.begin(), vertices.end(),
                      [](const auto& x, const auto& y) { return x.first < y.first; });
-    std::vector<Vertex_handle> seen;
+    std::unordered_set<Vertex_handle> seen;
     Ring ring;
     for(const auto& w : vertices) {
       if(stop()) return done;
       const Vertex_handle v = w.second;
-      if(std::find(seen.begin(), seen.end(), v) != seen.end()) continue;
-      seen.push_back(v);
+      if(!seen.insert(v).second) continue;
       if(!smoother_.is_movable(v)) continue;
       for(int k = 0; k < max_moves_per_vertex; ++k) {
         if(!smoother_.make_ring(v, ring) || !lift(ring)) break;
