@@ -1,0 +1,225 @@
+// Copyright (c) 2026 VVM contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The particle-based lattice optimization (dissertation Alg. 5 and its
+// multiresolution start): random particles in the domain, rounds of L-BFGS
+// (Alg. 2), deletion (Alg. 3) and insertion (Alg. 4) until they stop
+// changing, first at 2^k l*, then refined level by level down to l*.
+
+#ifndef CGAL_TETRAHEDRAL_LATTICE_MESHING_INTERNAL_LATTICE_OPTIMIZER_H
+#define CGAL_TETRAHEDRAL_LATTICE_MESHING_INTERNAL_LATTICE_OPTIMIZER_H
+
+#include <CGAL/Tetrahedral_lattice_meshing/internal/Particle_deletion.h>
+#include <CGAL/Tetrahedral_lattice_meshing/internal/Particle_insertion.h>
+#include <CGAL/Tetrahedral_lattice_meshing/internal/Particle_system.h>
+#include <CGAL/Tetrahedral_lattice_meshing/lattice_particle_types.h>
+
+#include <CGAL/Random.h>
+#include <CGAL/Real_timer.h>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <iostream>
+#include <numeric>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Tetrahedral_lattice_meshing {
+namespace internal {
+
+struct Lattice_options
+{
+  double sigma = -1;      // kernel width in units of l*; < 0: the lattice's
+  double radius = -1;     // neighbour radius in units of l*; < 0: the lattice's
+  int levels = 0;         // multiresolution levels k: start at 2^k l*
+  int max_rounds = -1;    // MaxRoundNum; < 0: 16 at the first level, 8 after
+  double time_limit = 0;  // seconds, 0: none
+  unsigned seed = 0;
+  bool verbose = false;
+  std::function<void(const Lattice_round_report&)> visitor;
+};
+
+/// the volume of the domain measured in the imagined space, \f$ \int |\det B| \f$, over the boundary's cells
+template <class Boundary, class FrameField, class Point_3>
+double imagined_volume(const Boundary& boundary, const FrameField& field)
+{
+  const auto& cells = boundary.cells();
+  std::vector<double> v(cells.size());
+  parallel_for_each_index(cells.size(), [&](std::size_t k) {
+    const auto& p = cells[k];
+    const Eigen::Vector3d c = 0.25 * (p[0] + p[1] + p[2] + p[3]);
+    const Eigen::Matrix3d B = field.B(Point_3(c[0], c[1], c[2]));
+    v[k] = std::abs(B.determinant() * (p[1] - p[0]).dot((p[2] - p[0]).cross(p[3] - p[0]))) / 6.;
+  });
+  return std::accumulate(v.begin(), v.end(), 0.);
+}
+
+template <class FrameField, class Boundary, class Point_3>
+class Lattice_optimizer
+{
+  typedef Particle_system<FrameField, Boundary, Point_3> System;
+
+public:
+  Lattice_optimizer(const Lattice& lattice, const FrameField& field, const Boundary& boundary, double l_star,
+                    const Lattice_options& options)
+    : lattice_(lattice), field_(field), boundary_(boundary), l_(l_star), o_(options)
+  {}
+
+  Lattice_particles_3<Point_3> run()
+  {
+    timer_.start();
+    const double sigma = o_.sigma > 0 ? o_.sigma : lattice_.sigma;
+    const double radius = o_.radius > 0 ? o_.radius : lattice_.neighbor_radius;
+    double l = l_ * std::pow(2., o_.levels);
+    auto system = std::make_unique<System>(lattice_, field_, &boundary_, l, sigma, radius);
+    random_start(*system);
+    Lattice_particles_3<Point_3> out;
+    for(int level = o_.levels; level >= 0; --level) {
+      if(level < o_.levels) { // refine: the sites of the lattice of half the edge length
+        auto finer = std::make_unique<System>(lattice_, field_, &boundary_, l / 2, sigma, radius);
+        finer->points = system->points;
+        finer->kinds = system->kinds;
+        finer->features = system->features;
+        finer->directions = system->directions;
+        finer->clearance = system->clearance;
+        finer->moved = system->moved;
+        refine(*finer);
+        system = std::move(finer);
+        l /= 2;
+      }
+      const int max_rounds = o_.max_rounds >= 0 ? o_.max_rounds : (level == o_.levels ? 16 : 8);
+      out.number_of_rounds += optimize_level(*system, o_.levels - level, level, max_rounds);
+      if(time_up()) {
+        out.time_limit_reached = true;
+        break;
+      }
+    }
+    // the final projection may bring two particles together: keep one
+    remove_coincident(*system);
+    out.lattice = lattice_;
+    out.edge_length = l_;
+    for(std::size_t i = 0; i < system->size(); ++i) {
+      const Eigen::Vector3d& p = system->points[i];
+      out.points.emplace_back(p[0], p[1], p[2]);
+    }
+    out.kinds = system->kinds;
+    out.features = system->features;
+    system->build_pairs();
+    Eigen::VectorXd g;
+    out.energy = system->size() ? system->energy_and_gradient(system->positions(), g) / double(system->size()) : 0.;
+    out.time = timer_.time();
+    return out;
+  }
+
+private:
+  bool time_up() const { return o_.time_limit > 0 && timer_.time() > o_.time_limit; }
+
+  // N particles uniformly in the imagined space: a sampling cell chosen by its imagined
+  // volume, a uniform point in it; the corners as fixed particles.
+  void random_start(System& s)
+  {
+    const auto& cells = boundary_.cells();
+    std::vector<double> w(cells.size());
+    for(std::size_t k = 0; k < cells.size(); ++k) {
+      const auto& p = cells[k];
+      const Eigen::Vector3d c = 0.25 * (p[0] + p[1] + p[2] + p[3]);
+      w[k] = std::abs(s.B(c).determinant() * (p[1] - p[0]).dot((p[2] - p[0]).cross(p[3] - p[0]))) / 6.;
+    }
+    std::partial_sum(w.begin(), w.end(), w.begin());
+    const double volume = w.empty() ? 0. : w.back();
+    const double l = s.edge_length();
+    const std::size_t n = std::size_t(std::llround(volume * lattice_.particles_per_cube / (l * l * l)));
+    for(std::size_t k = 0; k < boundary_.corners().size(); ++k)
+      s.add(boundary_.corners()[k], Particle_kind::CORNER, boundary_.corner_numbers()[k]);
+    CGAL::Random random(o_.seed);
+    for(std::size_t k = 0; k < n && volume > 0; ++k) {
+      const double t = random.get_double(0, volume);
+      const std::size_t c = std::min(std::size_t(std::upper_bound(w.begin(), w.end(), t) - w.begin()), cells.size() - 1);
+      // a uniform point of a tetrahedron (Rocchini and Cignoni's folding of the unit cube)
+      double a = random.get_double(), b = random.get_double(), d = random.get_double();
+      if(a + b > 1) { a = 1 - a; b = 1 - b; }
+      if(b + d > 1) { const double t2 = d; d = 1 - a - b; b = 1 - t2; }
+      else if(a + b + d > 1) { const double t2 = d; d = a + b + d - 1; a = 1 - b - t2; }
+      const auto& p = cells[c];
+      s.add(p[0] + a * (p[1] - p[0]) + b * (p[2] - p[0]) + d * (p[3] - p[0]), Particle_kind::FREE);
+    }
+    s.project();
+  }
+
+  void refine(System& s) { insert_particles(s, std::numeric_limits<double>::infinity()); }
+
+  void remove_coincident(System& s)
+  {
+    Lattice strict = lattice_;
+    strict.deletion_rules.resize(1); // the nearest neighbour closer than half l_closest
+    System copy(strict, field_, &boundary_, s.edge_length(), s.sigma(), s.neighbor_radius());
+    copy.points = s.points;
+    copy.kinds = s.kinds;
+    copy.features = s.features;
+    copy.directions = s.directions;
+    copy.clearance = s.clearance;
+    copy.moved = s.moved;
+    if(delete_particles(copy) == 0) return;
+    s.points = copy.points;
+    s.kinds = copy.kinds;
+    s.features = copy.features;
+    s.directions = copy.directions;
+    s.clearance = copy.clearance;
+    s.moved = copy.moved;
+  }
+
+  // Alg. 5 at one edge length; returns the number of rounds
+  int optimize_level(System& s, int level_index, int level, int max_rounds)
+  {
+    auto round = [&](int r, double eps, int its, std::size_t deleted, std::size_t inserted) {
+      const auto res = s.lbfgs_round(eps, its);
+      s.project();
+      Lattice_round_report rep;
+      rep.level = level;
+      rep.round = r;
+      rep.energy = s.size() ? res.energy / double(s.size()) : 0.;
+      rep.number_of_particles = s.size();
+      rep.number_deleted = deleted;
+      rep.number_inserted = inserted;
+      rep.lbfgs_iterations = res.iterations;
+      rep.time = timer_.time();
+      if(o_.verbose)
+        std::cerr << "  lattice level " << level << " round " << r << ": " << s.size() << " particles (-" << deleted
+                  << " +" << inserted << "), energy/particle " << rep.energy << ", " << res.iterations
+                  << " L-BFGS its, " << rep.time << " s\n";
+      if(o_.visitor) o_.visitor(rep);
+    };
+    (void)level_index;
+    int rounds = 1;
+    round(0, 1e-2, 13, 0, 0);
+    for(int r = 0; r < max_rounds && !time_up(); ++r) {
+      const std::size_t deleted = delete_particles(s);
+      const std::size_t inserted = insert_particles(s);
+      if(deleted + inserted == 0) break;
+      round(r + 1, 1e-2, r + 1 < 5 ? 13 : 8, deleted, inserted);
+      ++rounds;
+    }
+    if(!time_up()) {
+      round(rounds, 1e-4, 100, 0, 0); // the last round, to convergence
+      ++rounds;
+    }
+    return rounds;
+  }
+
+  const Lattice& lattice_;
+  const FrameField& field_;
+  const Boundary& boundary_;
+  double l_;
+  Lattice_options o_;
+  CGAL::Real_timer timer_;
+};
+
+} // namespace internal
+} // namespace Tetrahedral_lattice_meshing
+} // namespace CGAL
+
+#endif // CGAL_TETRAHEDRAL_LATTICE_MESHING_INTERNAL_LATTICE_OPTIMIZER_H

@@ -1,0 +1,214 @@
+// Copyright (c) 2026 VVM contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Connects lattice particles into a Mesh_complex_3_in_triangulation_3 (the
+// dissertation's section 4.3.2 with CGAL in place of GEOGRAM's RVD and
+// TetGen): the Delaunay triangulation of the particles, cells labelled by the
+// domain's subdomain at their centroid, surface facets between cells of
+// different labels with the patch of the sampled boundary there, feature
+// edges along the sharp edges, corners, and vertex dimensions as Mesh_3 sets
+// them, so that output_to_medit, the quality measures and GSM see it as they
+// see make_mesh_3's output.
+
+#ifndef CGAL_TETRAHEDRAL_LATTICE_MESHING_INTERNAL_PARTICLE_COMPLEX_H
+#define CGAL_TETRAHEDRAL_LATTICE_MESHING_INTERNAL_PARTICLE_COMPLEX_H
+
+#include <CGAL/Tetrahedral_lattice_meshing/lattice_particle_types.h>
+
+#include <CGAL/Mesh_3/Has_features.h>
+#include <CGAL/Spatial_sort_traits_adapter_3.h>
+#include <CGAL/property_map.h>
+#include <CGAL/spatial_sort.h>
+
+#include <Eigen/Core>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <map>
+#include <set>
+#include <numeric>
+#include <vector>
+
+namespace CGAL {
+namespace Tetrahedral_lattice_meshing {
+namespace internal {
+
+struct Complex_report
+{
+  std::size_t number_of_vertices = 0;          ///< particles in the triangulation
+  std::size_t number_of_merged_particles = 0;  ///< particles at the place of another
+  std::size_t number_of_feature_edges = 0;
+  std::size_t number_of_surface_facets = 0;
+  std::size_t number_of_cells = 0;
+  std::size_t number_of_peeled_cells = 0;       ///< flat boundary cells left outside
+};
+
+/// true if the tetrahedron's smallest height is under a tenth of its longest edge
+inline bool is_flat(const std::array<Eigen::Vector3d, 4>& p)
+{
+  const double volume6 = std::abs((p[1] - p[0]).dot((p[2] - p[0]).cross(p[3] - p[0])));
+  double longest = 0, largest_face = 0;
+  for(int i = 0; i < 4; ++i)
+    for(int j = i + 1; j < 4; ++j) longest = (std::max)(longest, (p[i] - p[j]).norm());
+  for(int i = 0; i < 4; ++i) {
+    const Eigen::Vector3d& a = p[(i + 1) & 3], &b = p[(i + 2) & 3], &c = p[(i + 3) & 3];
+    largest_face = (std::max)(largest_face, (b - a).cross(c - a).norm()); // twice its area
+  }
+  // smallest height = 3 V / largest face area = volume6 / (2 area) = volume6 / largest_face
+  return !(largest_face > 0) || volume6 / largest_face < 0.1 * longest;
+}
+
+template <class C3T3, class MeshDomain, class Boundary, class Point_3>
+Complex_report connect_particles(C3T3& c3t3, const MeshDomain& domain, const Boundary& boundary,
+                                 const Lattice_particles_3<Point_3>& particles)
+{
+  typedef typename C3T3::Triangulation Tr;
+  typedef typename Tr::Vertex_handle Vertex_handle;
+  typedef typename Tr::Cell_handle Cell_handle;
+  typedef typename Tr::Geom_traits::Weighted_point_3 Weighted_point;
+  typedef typename Tr::Geom_traits::Point_3 Bare_point;
+  typedef typename MeshDomain::Subdomain_index Subdomain_index;
+
+  Complex_report report;
+  c3t3.clear();
+  Tr& tr = c3t3.triangulation();
+  const std::size_t n = particles.size();
+  // Hilbert order for insertion speed, handles kept per particle
+  std::vector<Bare_point> points;
+  points.reserve(n);
+  for(const Point_3& p : particles.points) points.emplace_back(p.x(), p.y(), p.z());
+  std::vector<std::size_t> order(n);
+  std::iota(order.begin(), order.end(), std::size_t(0));
+  typedef CGAL::Spatial_sort_traits_adapter_3<typename Tr::Geom_traits,
+      typename CGAL::Pointer_property_map<Bare_point>::const_type> Sort_traits;
+  const std::vector<Bare_point>& cpoints = points;
+  CGAL::spatial_sort(order.begin(), order.end(), Sort_traits(CGAL::make_property_map(cpoints)));
+  std::vector<Vertex_handle> vertex(n);
+  Cell_handle hint;
+  for(std::size_t i : order) {
+    vertex[i] = tr.insert(Weighted_point(points[i], 0), hint);
+    if(vertex[i] != Vertex_handle()) hint = vertex[i]->cell();
+  }
+  std::map<Vertex_handle, std::size_t> particle_of;
+  for(std::size_t i = 0; i < n; ++i) {
+    if(vertex[i] == Vertex_handle()) continue;
+    if(!particle_of.emplace(vertex[i], i).second) ++report.number_of_merged_particles;
+  }
+  report.number_of_vertices = tr.number_of_vertices();
+  if(tr.dimension() < 3) return report;
+
+  auto eig = [&](const Vertex_handle& v) {
+    const auto& p = tr.geom_traits().construct_point_3_object()(tr.point(v));
+    return Eigen::Vector3d(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+  };
+  // cells: the subdomain at the centroid
+  const auto is_in = domain.is_in_domain_object();
+  for(Cell_handle c : tr.finite_cell_handles()) {
+    Eigen::Vector3d g = Eigen::Vector3d::Zero();
+    for(int k = 0; k < 4; ++k) g += 0.25 * eig(c->vertex(k));
+    const auto s = is_in(typename MeshDomain::Point_3(g[0], g[1], g[2]));
+    if(s && *s != Subdomain_index()) {
+      c3t3.add_to_complex(c, *s);
+      ++report.number_of_cells;
+    }
+  }
+  // Flat cells of boundary particles (four particles of a planar face, or a sliver across
+  // a curved boundary) with a facet on the boundary are outside: peel them, layer by layer.
+  auto kind = [&](const Vertex_handle& v) {
+    auto it = particle_of.find(v);
+    return it == particle_of.end() ? Particle_kind::FREE : particles.kinds[it->second];
+  };
+  auto label = [&](const Cell_handle& c) {
+    return (!tr.is_infinite(c) && c3t3.is_in_complex(c)) ? c3t3.subdomain_index(c) : Subdomain_index();
+  };
+  for(int pass = 0; pass < 8; ++pass) {
+    std::vector<Cell_handle> peel;
+    for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c) {
+      bool all_boundary = true, on_boundary = false;
+      for(int k = 0; k < 4; ++k) {
+        all_boundary = all_boundary && kind(c->vertex(k)) != Particle_kind::FREE;
+        on_boundary = on_boundary || label(c->neighbor(k)) != c3t3.subdomain_index(c);
+      }
+      if(!all_boundary || !on_boundary) continue;
+      std::array<Eigen::Vector3d, 4> p;
+      for(int k = 0; k < 4; ++k) p[k] = eig(c->vertex(k));
+      if(is_flat(p)) peel.push_back(c);
+    }
+    for(const Cell_handle& c : peel) c3t3.remove_from_complex(c);
+    report.number_of_peeled_cells += peel.size();
+    report.number_of_cells -= peel.size();
+    if(peel.empty()) break;
+  }
+  // surface facets: between cells of different subdomains (outside included)
+  for(auto f : tr.finite_facets()) {
+    const Cell_handle c = f.first, d = c->neighbor(f.second);
+    if(label(c) == label(d)) continue;
+    Eigen::Vector3d g = Eigen::Vector3d::Zero();
+    for(int k = 1; k <= 3; ++k) g += eig(c->vertex((f.second + k) & 3)) / 3.;
+    c3t3.add_to_complex(f, boundary.patch_indices()[std::size_t(boundary.closest_on_surface(g).feature)]);
+    ++report.number_of_surface_facets;
+  }
+  // feature edges: Delaunay edges between sharp-edge or corner particles along a sharp edge
+  auto on_feature = [&](Particle_kind k) { return k == Particle_kind::SHARP_EDGE || k == Particle_kind::CORNER; };
+  std::map<Vertex_handle, int> curve_of;
+  if constexpr(CGAL::Mesh_3::internal::Has_features<MeshDomain>::value)
+  if(boundary.has_sharp_edges()) {
+    for(auto e : tr.finite_edges()) {
+      const Vertex_handle u = e.first->vertex(e.second), v = e.first->vertex(e.third);
+      if(!on_feature(kind(u)) || !on_feature(kind(v))) continue;
+      const Eigen::Vector3d a = eig(u), b = eig(v);
+      const auto c = boundary.closest_on_sharp_edge(0.5 * (a + b));
+      if(c.distance > 0.1 * (b - a).norm()) continue;
+      // the edge's curve must be the sharp-edge endpoints' own
+      bool same = true;
+      for(const Vertex_handle& w : {u, v})
+        if(kind(w) == Particle_kind::SHARP_EDGE && particles.features[particle_of[w]] != c.feature) same = false;
+      if(!same) continue;
+      c3t3.add_to_complex(u, v, boundary.curve_indices()[std::size_t(c.feature)]);
+      curve_of[u] = curve_of[v] = c.feature;
+      ++report.number_of_feature_edges;
+    }
+  }
+  // vertex dimensions and indices, as Mesh_3 sets them
+  std::set<Vertex_handle> on_surface;
+  std::map<Vertex_handle, Subdomain_index> subdomain_of;
+  for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c)
+    for(int k = 0; k < 4; ++k) subdomain_of.emplace(c->vertex(k), c3t3.subdomain_index(c));
+  for(auto f = c3t3.facets_in_complex_begin(); f != c3t3.facets_in_complex_end(); ++f) {
+    const auto spi = c3t3.surface_patch_index(*f);
+    for(int k = 1; k <= 3; ++k) {
+      const Vertex_handle v = f->first->vertex((f->second + k) & 3);
+      on_surface.insert(v);
+      c3t3.set_dimension(v, 2);
+      c3t3.set_index(v, domain.index_from_surface_patch_index(spi));
+    }
+  }
+  for(Vertex_handle v : tr.finite_vertex_handles()) {
+    if(on_surface.count(v)) continue;
+    c3t3.set_dimension(v, 3);
+    auto it = subdomain_of.find(v);
+    c3t3.set_index(v, domain.index_from_subdomain_index(it == subdomain_of.end() ? Subdomain_index() : it->second));
+  }
+  if constexpr(CGAL::Mesh_3::internal::Has_features<MeshDomain>::value) {
+    for(const auto& vc : curve_of) {
+      c3t3.set_dimension(vc.first, 1);
+      c3t3.set_index(vc.first, domain.index_from_curve_index(boundary.curve_indices()[std::size_t(vc.second)]));
+    }
+    for(const auto& vp : particle_of) {
+      if(particles.kinds[vp.second] != Particle_kind::CORNER || !on_surface.count(vp.first)) continue;
+      const auto ci = boundary.corner_indices()[std::size_t(particles.features[vp.second])];
+      c3t3.add_to_complex(vp.first, ci);
+      c3t3.set_dimension(vp.first, 0);
+      c3t3.set_index(vp.first, domain.index_from_corner_index(ci));
+    }
+  }
+  return report;
+}
+
+} // namespace internal
+} // namespace Tetrahedral_lattice_meshing
+} // namespace CGAL
+
+#endif // CGAL_TETRAHEDRAL_LATTICE_MESHING_INTERNAL_PARTICLE_COMPLEX_H

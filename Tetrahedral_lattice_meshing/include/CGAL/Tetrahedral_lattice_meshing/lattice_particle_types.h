@@ -1,0 +1,75 @@
+// Copyright (c) 2026 VVM contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// What the particle engine returns and reports: particle kinds, the result of
+// lattice_particles_3() and the report given to the visitor after each round.
+
+#ifndef CGAL_TETRAHEDRAL_LATTICE_MESHING_LATTICE_PARTICLE_TYPES_H
+#define CGAL_TETRAHEDRAL_LATTICE_MESHING_LATTICE_PARTICLE_TYPES_H
+
+#include <CGAL/Tetrahedral_lattice_meshing/Lattice.h>
+
+#include <cstddef>
+#include <vector>
+
+namespace CGAL {
+namespace Tetrahedral_lattice_meshing {
+
+/// \ingroup PkgTetrahedralLatticeMeshingRef
+/// the kinds of particles (dissertation 4.2.2): what a particle may do during the optimization
+enum class Particle_kind
+{
+  CORNER,     ///< fixed at a corner of the domain (where more than two sharp edges meet)
+  SHARP_EDGE, ///< slides along a sharp edge (a feature curve)
+  BOUNDARY,   ///< slides on the boundary surface
+  FREE        ///< moves freely inside the domain
+};
+
+/// \ingroup PkgTetrahedralLatticeMeshingRef
+/// the state of the particle optimization after one round (L-BFGS, then deletion and insertion)
+struct Lattice_round_report
+{
+  int level = 0;                  ///< multiresolution level: the edge length is \f$ 2^{level} l^* \f$
+  int round = 0;                  ///< round number within the level
+  double energy = 0;              ///< the GHK energy at the end of the L-BFGS run, per particle
+  std::size_t number_of_particles = 0; ///< after deletion and insertion
+  std::size_t number_deleted = 0;
+  std::size_t number_inserted = 0;
+  int lbfgs_iterations = 0;
+  double time = 0;                ///< seconds since the start
+};
+
+/*!
+ * \ingroup PkgTetrahedralLatticeMeshingRef
+ * The particles made by `lattice_particles_3()`: positions, kinds, and for boundary,
+ * sharp-edge and corner particles the number of their surface patch, curve or corner
+ * (in the order of the domain's indices met in its boundary sampling; -1 for free particles).
+ *
+ * \tparam Point_3 the point type of the kernel
+ */
+template <class Point_3>
+struct Lattice_particles_3
+{
+  std::vector<Point_3> points;
+  std::vector<Particle_kind> kinds;
+  std::vector<int> features;
+  Lattice lattice;            ///< the lattice and its constants
+  double edge_length = 0;     ///< \f$ l^* \f$ used
+  double energy = 0;          ///< the final GHK energy per particle
+  int number_of_rounds = 0;   ///< rounds run, all levels together
+  double time = 0;            ///< seconds, boundary sampling included
+  bool time_limit_reached = false;
+
+  std::size_t size() const { return points.size(); }
+  std::size_t number_of(Particle_kind k) const
+  {
+    std::size_t n = 0;
+    for(Particle_kind x : kinds) n += (x == k);
+    return n;
+  }
+};
+
+} // namespace Tetrahedral_lattice_meshing
+} // namespace CGAL
+
+#endif // CGAL_TETRAHEDRAL_LATTICE_MESHING_LATTICE_PARTICLE_TYPES_H

@@ -1,0 +1,223 @@
+// Copyright (c) 2026 VVM contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// CGAL::lattice_particles_3(): particles in a domain forming a BCC, FCC or
+// cubic lattice aligned with a frame field (dissertation ch. 4.2).
+
+#ifndef CGAL_LATTICE_PARTICLES_3_H
+#define CGAL_LATTICE_PARTICLES_3_H
+
+#include <CGAL/Tetrahedral_lattice_meshing/internal/Domain_boundary.h>
+#include <CGAL/Tetrahedral_lattice_meshing/internal/Lattice_optimizer.h>
+#include <CGAL/Tetrahedral_lattice_meshing/Lattice.h>
+#include <CGAL/Tetrahedral_lattice_meshing/lattice_particle_types.h>
+#include <CGAL/Tetrahedral_lattice_meshing/parameters.h>
+
+#include <CGAL/Named_function_parameters.h>
+
+#include <Eigen/Eigenvalues>
+
+#include <tbb/global_control.h>
+
+#include <cmath>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <type_traits>
+
+namespace CGAL {
+namespace Tetrahedral_lattice_meshing {
+
+/// \ingroup PkgTetrahedralLatticeMeshingRef
+/// the largest number of particles `lattice_particles_3()` accepts to make (memory: about 2 kB each)
+constexpr double maximum_number_of_particles = 2e7;
+
+namespace internal {
+
+/// the domain's boundary and the particles, as `make_lattice_mesh_3()` needs both
+template <class MeshDomain>
+struct Particles_in_domain
+{
+  typedef typename MeshDomain::R K;
+  std::unique_ptr<Domain_boundary<MeshDomain, K>> boundary;
+  Lattice_particles_3<typename K::Point_3> particles;
+};
+
+template <class MeshDomain, class FrameField, class NamedParameters>
+Particles_in_domain<MeshDomain> lattice_particles(const MeshDomain& domain, const FrameField& field,
+                                                  const NamedParameters& np)
+{
+  typedef typename MeshDomain::R K;
+  typedef typename K::Point_3 Point_3;
+  namespace TLM = Tetrahedral_lattice_meshing;
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  const char* who = "lattice_particles_3: ";
+  auto fail = [&](const std::string& m) { throw std::invalid_argument(who + m); };
+
+  const Lattice lattice = Lattice::make(choose_parameter(get_parameter(np, TLM::internal_np::lattice), Lattice_type::BCC));
+  constexpr bool has_length =
+      !std::is_same<decltype(get_parameter(np, TLM::internal_np::edge_length)), CGAL::internal_np::Param_not_found>::value;
+  constexpr bool has_count = !std::is_same<decltype(get_parameter(np, TLM::internal_np::number_of_particles)),
+                                           CGAL::internal_np::Param_not_found>::value;
+  static_assert(!(has_length && has_count), "lattice_particles_3: give edge_length or number_of_particles, not both");
+  double l = choose_parameter(get_parameter(np, TLM::internal_np::edge_length), 0.);
+  double n_wanted = double(choose_parameter(get_parameter(np, TLM::internal_np::number_of_particles), std::size_t(10000)));
+  Lattice_options o;
+  o.sigma = choose_parameter(get_parameter(np, TLM::internal_np::kernel_width), -1.);
+  o.radius = choose_parameter(get_parameter(np, TLM::internal_np::neighbor_radius), -1.);
+  o.levels = choose_parameter(get_parameter(np, TLM::internal_np::multiresolution_levels), -1);
+  o.max_rounds = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), -1);
+  o.time_limit = choose_parameter(get_parameter(np, CGAL::internal_np::maximum_running_time), 0.);
+  o.seed = choose_parameter(get_parameter(np, CGAL::internal_np::random_seed), 0u);
+  o.verbose = choose_parameter(get_parameter(np, CGAL::internal_np::verbose), false);
+  const int threads = choose_parameter(get_parameter(np, TLM::internal_np::number_of_threads), 0);
+  auto visitor = get_parameter(np, CGAL::internal_np::visitor);
+  if constexpr(!std::is_same<decltype(visitor), CGAL::internal_np::Param_not_found>::value)
+    o.visitor = [visitor](const Lattice_round_report& r) { visitor(r); };
+
+  if(has_length && !(l > 0 && std::isfinite(l))) fail("the edge length must be positive and finite");
+  if(!has_length && !(n_wanted >= 1)) fail("the number of particles must be at least 1");
+  if(o.sigma != -1. && !(o.sigma > 0 && std::isfinite(o.sigma))) fail("the kernel width must be positive");
+  if(o.radius != -1. && !(o.radius > 0 && std::isfinite(o.radius))) fail("the neighbour radius must be positive");
+  if(o.levels < -1 || o.levels > 6) fail("the number of multiresolution levels must be in [0, 6]");
+  if(o.max_rounds < -1) fail("the number of rounds must be non-negative");
+  if(!(o.time_limit >= 0)) fail("the time limit must be non-negative");
+  if(threads < 0) fail("the number of threads must be non-negative");
+
+  // A first size from the bounding box, to refuse absurd requests before any work
+  const auto bb = domain.bbox();
+  const Eigen::Vector3d lo(bb.xmin(), bb.ymin(), bb.zmin()), hi(bb.xmax(), bb.ymax(), bb.zmax());
+  const Eigen::Vector3d centre = 0.5 * (lo + hi);
+  if(!lo.allFinite() || !hi.allFinite() || !((hi - lo).prod() > 0)) fail("the domain's bounding box is empty or not finite");
+  const Point_3 c(centre[0], centre[1], centre[2]);
+  const Eigen::Matrix3d Tc = field.T(c), Bc = field.B(c); // throws on a degenerate frame
+  const double box_volume = (hi - lo).prod() * std::abs(Bc.determinant());
+  double l0 = has_length ? l : std::cbrt(box_volume * lattice.particles_per_cube / n_wanted);
+  if(has_length && box_volume * lattice.particles_per_cube / (l * l * l) > 8 * maximum_number_of_particles)
+    fail("the edge length " + std::to_string(l) + " would need about " +
+         std::to_string(box_volume * lattice.particles_per_cube / (l * l * l)) + " particles (at most " +
+         std::to_string(maximum_number_of_particles) + ")");
+  if(!has_length && n_wanted > maximum_number_of_particles)
+    fail("at most " + std::to_string(maximum_number_of_particles) + " particles");
+  Eigen::JacobiSVD<Eigen::Matrix3d> svd(Tc);
+  const double spacing = l0 * svd.singularValues().minCoeff();
+
+  Particles_in_domain<MeshDomain> out;
+  CGAL::Real_timer timer;
+  timer.start();
+  std::unique_ptr<tbb::global_control> thread_limit;
+  if(threads > 0)
+    thread_limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
+                                                         std::size_t(threads));
+  out.boundary = std::make_unique<Domain_boundary<MeshDomain, K>>(domain, spacing);
+  const double volume = imagined_volume<Domain_boundary<MeshDomain, K>, FrameField, Point_3>(*out.boundary, field);
+  if(!(volume > 0)) fail("the domain is empty (no volume)");
+  if(!has_length) l = std::cbrt(volume * lattice.particles_per_cube / n_wanted);
+  const double n = volume * lattice.particles_per_cube / (l * l * l);
+  if(n > maximum_number_of_particles)
+    fail("the edge length " + std::to_string(l) + " would need about " + std::to_string(n) + " particles (at most " +
+         std::to_string(maximum_number_of_particles) + ")");
+  if(n < 1) fail("the edge length " + std::to_string(l) + " is larger than the domain (under one particle)");
+  if(o.levels < 0) o.levels = n >= 4000 ? 1 : 0; // one level unless the coarse lattice is too small
+
+  Lattice_optimizer<FrameField, Domain_boundary<MeshDomain, K>, Point_3> optimizer(lattice, field, *out.boundary, l, o);
+  out.particles = optimizer.run();
+  out.particles.time = timer.time();
+  return out;
+}
+
+} // namespace internal
+} // namespace Tetrahedral_lattice_meshing
+
+/*!
+ * \ingroup PkgTetrahedralLatticeMeshingRef
+ *
+ * places particles in `domain` so that they form a lattice (BCC, FCC or cubic) aligned
+ * with the frame field `field` (dissertation ch. 4.2): random particles, rounds of L-BFGS on
+ * the Gaussian Hole Kernel energy (eq. 4.2, 4.4; LBFGS++), each followed by the projection of
+ * the particles near the boundary onto it and of those near sharp edges onto them, and by
+ * particle deletion and insertion (Alg. 2-5), optionally from a coarser lattice
+ * (multiresolution). Corners of the domain are fixed particles, particles on sharp edges
+ * slide along them, particles on the boundary slide on it.
+ *
+ * The domain's boundary, feature curves and corners are those `make_mesh_3()` finds for it
+ * (sampled at about the particle spacing, chordal error 2% of it), so any `MeshDomain_3`
+ * works: polyhedral (with features), implicit, labelled (several subdomains: their
+ * interfaces are boundaries too). The lattice's edge length \f$ l^* \f$ is measured in the
+ * imagined space, where the field's frames \f$ T \f$ are the identity: particle \f$ p_i \f$'s
+ * neighbours sit at \f$ p_i + l^* T h_k \f$, \f$ h_k \f$ the lattice's one-ring.
+ *
+ * \tparam MeshDomain a model of `MeshDomain_3` with `bbox()` (all of CGAL's domains)
+ * \tparam FrameField a model of `FrameField_3` with the domain's `Point_3`; it is called from
+ *   several threads at once
+ * \tparam NamedParameters a sequence of named parameters
+ *
+ * \cgalNamedParamsBegin
+ *   \cgalParamNBegin{Tetrahedral_lattice_meshing::parameters::lattice}
+ *     \cgalParamType{`Tetrahedral_lattice_meshing::Lattice_type`} \cgalParamDefault{`BCC`}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{Tetrahedral_lattice_meshing::parameters::edge_length}
+ *     \cgalParamDescription{\f$ l^* \f$, the cube edge of the lattice in the imagined space}
+ *     \cgalParamType{`double`, positive} \cgalParamDefault{from `number_of_particles`}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{Tetrahedral_lattice_meshing::parameters::number_of_particles}
+ *     \cgalParamDescription{the number of particles sought: \f$ l^* \f$ is set so that the lattice
+ *       fills the domain's volume in the imagined space with that many (not with `edge_length`)}
+ *     \cgalParamType{`std::size_t`} \cgalParamDefault{10000}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{Tetrahedral_lattice_meshing::parameters::kernel_width}
+ *     \cgalParamDescription{\f$ \sigma \f$ in units of \f$ l^* \f$}
+ *     \cgalParamType{`double`} \cgalParamDefault{0.3 \f$ l_{closest} \f$ (BCC \f$ 0.26 \f$, FCC \f$ 0.21 \f$, cubic 0.3)}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{Tetrahedral_lattice_meshing::parameters::neighbor_radius}
+ *     \cgalParamDescription{\f$ R \f$ in units of \f$ l^* \f$, in the imagined space (the Euclidean
+ *       search radius is widened by the field's largest stretch)}
+ *     \cgalParamType{`double`} \cgalParamDefault{1.3 (cubic 1.5)}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{Tetrahedral_lattice_meshing::parameters::multiresolution_levels}
+ *     \cgalParamDescription{\f$ k \f$: optimize at \f$ 2^k l^* \f$ first, then refine level by level}
+ *     \cgalParamType{`int` in [0, 6]} \cgalParamDefault{1 from 4,000 particles, else 0}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{number_of_iterations}
+ *     \cgalParamDescription{MaxRoundNum: the largest number of deletion-insertion rounds per level}
+ *     \cgalParamType{`int`} \cgalParamDefault{16 at the first level, 8 at the next ones}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{random_seed}
+ *     \cgalParamDescription{the seed of the random initial particles}
+ *     \cgalParamType{`unsigned int`} \cgalParamDefault{0}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{Tetrahedral_lattice_meshing::parameters::number_of_threads}
+ *     \cgalParamDescription{the largest number of threads; 0 lets TBB choose. The result does not depend on it.}
+ *     \cgalParamType{`int`} \cgalParamDefault{0}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{maximum_running_time}
+ *     \cgalParamDescription{a time limit in seconds, checked between rounds; 0 for none}
+ *     \cgalParamType{`double`} \cgalParamDefault{0}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{visitor}
+ *     \cgalParamDescription{called after each round with its report (energy, particles deleted and inserted, time)}
+ *     \cgalParamType{a callable `void(const Tetrahedral_lattice_meshing::Lattice_round_report&)`}
+ *     \cgalParamDefault{none}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{verbose}
+ *     \cgalParamDescription{one line per round on `std::cerr`} \cgalParamType{`bool`} \cgalParamDefault{false}
+ *   \cgalParamNEnd
+ * \cgalNamedParamsEnd
+ *
+ * \return the particles with their kinds and features, \f$ l^* \f$, the final energy and the time
+ * \throw std::invalid_argument before any optimization on a bad parameter, a degenerate frame,
+ *   an empty domain, an edge length larger than the domain, or a request of more than
+ *   `Tetrahedral_lattice_meshing::maximum_number_of_particles` particles
+ */
+template <class MeshDomain, class FrameField, class NamedParameters = parameters::Default_named_parameters>
+Tetrahedral_lattice_meshing::Lattice_particles_3<typename MeshDomain::R::Point_3>
+lattice_particles_3(const MeshDomain& domain, const FrameField& field,
+                    const NamedParameters& np = parameters::default_values())
+{
+  return Tetrahedral_lattice_meshing::internal::lattice_particles(domain, field, np).particles;
+}
+
+} // namespace CGAL
+
+#endif // CGAL_LATTICE_PARTICLES_3_H
