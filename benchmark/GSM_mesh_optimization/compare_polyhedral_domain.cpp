@@ -5,6 +5,7 @@
 // built-in cube: Polyhedral_mesh_domain_with_features_3, sharp features
 // protected when --features-angle > 0 (the cube's by default).
 
+#include "box_surface.h"
 #include "comparison_driver.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -13,7 +14,6 @@
 #include <CGAL/GSM_mesh_optimization/IO/read_closed_surface.h>
 #include <CGAL/Polygon_mesh_processing/distance.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
-#include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 #include <CGAL/Polyhedral_mesh_domain_with_features_3.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/facets_in_complex_3_to_triangle_mesh.h>
@@ -32,21 +32,6 @@ typedef CGAL::Mesh_triangulation_3<Domain, CGAL::Default, CGAL::Sequential_tag>:
 typedef CGAL::Mesh_complex_3_in_triangulation_3<Tr, Domain::Corner_index, Domain::Curve_index> C3T3;
 namespace PMP = CGAL::Polygon_mesh_processing;
 
-Surface_mesh make_cube()
-{
-  Surface_mesh sm;
-  std::vector<Surface_mesh::Vertex_index> v;
-  for(int i = 0; i < 8; ++i)
-    v.push_back(sm.add_vertex(K::Point_3(i & 4 ? 1 : -1, i & 2 ? 1 : -1, i & 1 ? 1 : -1)));
-  // the six faces, outward oriented, as quads (corner bits: x=4, y=2, z=1)
-  const int quads[6][4] = {{0, 1, 3, 2}, {4, 6, 7, 5}, {0, 4, 5, 1},
-                           {2, 3, 7, 6}, {0, 2, 6, 4}, {1, 5, 7, 3}};
-  for(const auto& q : quads)
-    sm.add_face(v[q[0]], v[q[1]], v[q[2]], v[q[3]]);
-  PMP::triangulate_faces(sm);
-  return sm;
-}
-
 // a closed, non self-intersecting surface enclosing a volume; anything else is an Input_error
 double read_closed_surface(const std::string& path, Surface_mesh& sm)
 {
@@ -62,7 +47,7 @@ double read_closed_surface(const std::string& path, Surface_mesh& sm)
 int run_polyhedral_domain(const Options& options)
 {
   const bool is_cube = options.input == "cube";
-  Surface_mesh surface = is_cube ? make_cube() : Surface_mesh();
+  Surface_mesh surface = is_cube ? box_surface<Surface_mesh>(-1, 1) : Surface_mesh();
   const double volume = is_cube ? std::abs(PMP::volume(surface)) : read_closed_surface(options.input, surface);
   Domain domain(surface);
   const double angle = options.features_angle >= 0 ? options.features_angle : (is_cube ? 60. : 0.);

@@ -119,6 +119,7 @@ gsm_optimize(C3T3& c3t3, const MeshDomain* domain, bool boundary_fixed, const Na
   options.time_limit = choose_parameter(get_parameter(np, CGAL::internal_np::maximum_running_time), 0.);
   options.do_flip = choose_parameter(get_parameter(np, CGAL::internal_np::do_flip), true);
   options.do_split = choose_parameter(get_parameter(np, GSM::internal_np::split_edges), true);
+  options.do_smooth = choose_parameter(get_parameter(np, GSM::internal_np::smooth_vertices), true);
   options.sliver_bound = choose_parameter(get_parameter(np, GSM::internal_np::sliver_bound), 30.);
   options.verbose = choose_parameter(get_parameter(np, CGAL::internal_np::verbose), false);
   options.convergence =
@@ -244,6 +245,12 @@ gsm_optimize(C3T3& c3t3, const MeshDomain* domain, bool boundary_fixed, const Na
  *       (in the metric, if one is given); 0 skips the polishing}
  *     \cgalParamType{double, in [0, 70.5)}
  *     \cgalParamDefault{30}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{GSM_mesh_optimization::parameters::smooth_vertices}
+ *     \cgalParamDescription{whether the rounds move vertices; `false` makes them flips only, which
+ *       keeps the vertices where they are (e.g. on a lattice) until the polishing}
+ *     \cgalParamType{bool}
+ *     \cgalParamDefault{true}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{GSM_mesh_optimization::parameters::split_edges}
  *     \cgalParamDescription{whether the polishing may split interior edges of the cells under the

@@ -8,12 +8,14 @@
 #define CGAL_LATTICE_PARTICLES_3_H
 
 #include <CGAL/Tetrahedral_lattice_meshing/internal/Domain_boundary.h>
+#include <CGAL/Tetrahedral_lattice_meshing/internal/Domain_cross_field.h>
 #include <CGAL/Tetrahedral_lattice_meshing/internal/Lattice_optimizer.h>
 #include <CGAL/Tetrahedral_lattice_meshing/Lattice.h>
 #include <CGAL/Tetrahedral_lattice_meshing/lattice_particle_types.h>
 #include <CGAL/Tetrahedral_lattice_meshing/parameters.h>
 
 #include <CGAL/Named_function_parameters.h>
+#include <CGAL/Real_timer.h>
 
 #include <Eigen/Eigenvalues>
 
@@ -43,27 +45,45 @@ struct Particles_in_domain
   Lattice_particles_3<typename K::Point_3> particles;
 };
 
-template <class MeshDomain, class FrameField, class NamedParameters>
-Particles_in_domain<MeshDomain> lattice_particles(const MeshDomain& domain, const FrameField& field,
-                                                  const NamedParameters& np)
+/// the named parameters of `lattice_particles_3()`, read and checked
+struct Lattice_request
 {
-  typedef typename MeshDomain::R K;
-  typedef typename K::Point_3 Point_3;
+  Lattice lattice;
+  bool has_length = false;
+  double edge_length = 0;     // given, or 0
+  double number_of_particles = 0;
+  int threads = 0;
+  Lattice_options options;
+};
+
+template <class NamedParameters>
+Lattice_request read_lattice_request(const NamedParameters& np)
+{
   namespace TLM = Tetrahedral_lattice_meshing;
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
-  const char* who = "lattice_particles_3: ";
-  auto fail = [&](const std::string& m) { throw std::invalid_argument(who + m); };
+  auto fail = [](const std::string& m) { throw std::invalid_argument("lattice_particles_3: " + m); };
 
-  const Lattice lattice = Lattice::make(choose_parameter(get_parameter(np, TLM::internal_np::lattice), Lattice_type::BCC));
+  Lattice_request r;
+  r.lattice = Lattice::make(choose_parameter(get_parameter(np, TLM::internal_np::lattice), Lattice_type::BCC));
   constexpr bool has_length =
       !std::is_same<decltype(get_parameter(np, TLM::internal_np::edge_length)), CGAL::internal_np::Param_not_found>::value;
   constexpr bool has_count = !std::is_same<decltype(get_parameter(np, TLM::internal_np::number_of_particles)),
                                            CGAL::internal_np::Param_not_found>::value;
   static_assert(!(has_length && has_count), "lattice_particles_3: give edge_length or number_of_particles, not both");
-  double l = choose_parameter(get_parameter(np, TLM::internal_np::edge_length), 0.);
-  double n_wanted = double(choose_parameter(get_parameter(np, TLM::internal_np::number_of_particles), std::size_t(10000)));
-  Lattice_options o;
+  r.has_length = has_length;
+  r.edge_length = choose_parameter(get_parameter(np, TLM::internal_np::edge_length), 0.);
+  r.number_of_particles =
+      double(choose_parameter(get_parameter(np, TLM::internal_np::number_of_particles), std::size_t(10000)));
+  // a parameter that is given is checked; one that is not takes the lattice's default (-1 here)
+  auto given = [](const auto& p) {
+    return !std::is_same<std::decay_t<decltype(p)>, CGAL::internal_np::Param_not_found>::value;
+  };
+  const bool has_sigma = given(get_parameter(np, TLM::internal_np::kernel_width));
+  const bool has_radius = given(get_parameter(np, TLM::internal_np::neighbor_radius));
+  const bool has_levels = given(get_parameter(np, TLM::internal_np::multiresolution_levels));
+  const bool has_rounds = given(get_parameter(np, CGAL::internal_np::number_of_iterations));
+  Lattice_options& o = r.options;
   o.sigma = choose_parameter(get_parameter(np, TLM::internal_np::kernel_width), -1.);
   o.radius = choose_parameter(get_parameter(np, TLM::internal_np::neighbor_radius), -1.);
   o.levels = choose_parameter(get_parameter(np, TLM::internal_np::multiresolution_levels), -1);
@@ -71,35 +91,55 @@ Particles_in_domain<MeshDomain> lattice_particles(const MeshDomain& domain, cons
   o.time_limit = choose_parameter(get_parameter(np, CGAL::internal_np::maximum_running_time), 0.);
   o.seed = choose_parameter(get_parameter(np, CGAL::internal_np::random_seed), 0u);
   o.verbose = choose_parameter(get_parameter(np, CGAL::internal_np::verbose), false);
-  const int threads = choose_parameter(get_parameter(np, TLM::internal_np::number_of_threads), 0);
+  r.threads = choose_parameter(get_parameter(np, TLM::internal_np::number_of_threads), 0);
   auto visitor = get_parameter(np, CGAL::internal_np::visitor);
   if constexpr(!std::is_same<decltype(visitor), CGAL::internal_np::Param_not_found>::value)
-    o.visitor = [visitor](const Lattice_round_report& r) { visitor(r); };
+    o.visitor = [visitor](const Lattice_round_report& report) { visitor(report); };
 
-  if(has_length && !(l > 0 && std::isfinite(l))) fail("the edge length must be positive and finite");
-  if(!has_length && !(n_wanted >= 1)) fail("the number of particles must be at least 1");
-  if(o.sigma != -1. && !(o.sigma > 0 && std::isfinite(o.sigma))) fail("the kernel width must be positive");
-  if(o.radius != -1. && !(o.radius > 0 && std::isfinite(o.radius))) fail("the neighbour radius must be positive");
-  if(o.levels < -1 || o.levels > 6) fail("the number of multiresolution levels must be in [0, 6]");
-  if(o.max_rounds < -1) fail("the number of rounds must be non-negative");
+  if(has_length && !(r.edge_length > 0 && std::isfinite(r.edge_length)))
+    fail("the edge length must be positive and finite");
+  if(!has_length && !(r.number_of_particles >= 1)) fail("the number of particles must be at least 1");
+  if(!has_length && r.number_of_particles > maximum_number_of_particles)
+    fail("at most " + std::to_string(maximum_number_of_particles) + " particles");
+  if(has_sigma && !(o.sigma > 0 && std::isfinite(o.sigma))) fail("the kernel width must be positive and finite");
+  if(has_radius && !(o.radius > 0 && std::isfinite(o.radius))) fail("the neighbour radius must be positive and finite");
+  if(has_levels && (o.levels < 0 || o.levels > 6)) fail("the number of multiresolution levels must be in [0, 6]");
+  if(has_rounds && o.max_rounds < 0) fail("the number of rounds must be non-negative");
   if(!(o.time_limit >= 0)) fail("the time limit must be non-negative");
-  if(threads < 0) fail("the number of threads must be non-negative");
+  if(r.threads < 0) fail("the number of threads must be non-negative");
+  return r;
+}
 
-  // A first size from the bounding box, to refuse absurd requests before any work
+/// a first \f$ l^* \f$ from the bounding box of `domain` (where the frames' inverses have
+/// determinant `det_B`), refusing empty boxes and absurd sizes before any work
+template <class MeshDomain>
+double edge_length_from_box(const MeshDomain& domain, double det_B, const Lattice_request& r)
+{
+  auto fail = [](const std::string& m) { throw std::invalid_argument("lattice_particles_3: " + m); };
   const auto bb = domain.bbox();
   const Eigen::Vector3d lo(bb.xmin(), bb.ymin(), bb.zmin()), hi(bb.xmax(), bb.ymax(), bb.zmax());
-  const Eigen::Vector3d centre = 0.5 * (lo + hi);
   if(!lo.allFinite() || !hi.allFinite() || !((hi - lo).prod() > 0)) fail("the domain's bounding box is empty or not finite");
-  const Point_3 c(centre[0], centre[1], centre[2]);
-  const Eigen::Matrix3d Tc = field.T(c), Bc = field.B(c); // throws on a degenerate frame
-  const double box_volume = (hi - lo).prod() * std::abs(Bc.determinant());
-  double l0 = has_length ? l : std::cbrt(box_volume * lattice.particles_per_cube / n_wanted);
-  if(has_length && box_volume * lattice.particles_per_cube / (l * l * l) > 8 * maximum_number_of_particles)
+  const double box_volume = (hi - lo).prod() * std::abs(det_B);
+  const double l = r.edge_length;
+  if(r.has_length && box_volume * r.lattice.particles_per_cube / (l * l * l) > 8 * maximum_number_of_particles)
     fail("the edge length " + std::to_string(l) + " would need about " +
-         std::to_string(box_volume * lattice.particles_per_cube / (l * l * l)) + " particles (at most " +
+         std::to_string(box_volume * r.lattice.particles_per_cube / (l * l * l)) + " particles (at most " +
          std::to_string(maximum_number_of_particles) + ")");
-  if(!has_length && n_wanted > maximum_number_of_particles)
-    fail("at most " + std::to_string(maximum_number_of_particles) + " particles");
+  return r.has_length ? l : std::cbrt(box_volume * r.lattice.particles_per_cube / r.number_of_particles);
+}
+
+template <class MeshDomain, class FrameField>
+Particles_in_domain<MeshDomain> lattice_particles(const MeshDomain& domain, const FrameField& field,
+                                                  Lattice_request r)
+{
+  typedef typename MeshDomain::R K;
+  typedef typename K::Point_3 Point_3;
+  auto fail = [](const std::string& m) { throw std::invalid_argument("lattice_particles_3: " + m); };
+
+  const auto bb = domain.bbox();
+  const Point_3 c(0.5 * (bb.xmin() + bb.xmax()), 0.5 * (bb.ymin() + bb.ymax()), 0.5 * (bb.zmin() + bb.zmax()));
+  const Eigen::Matrix3d Tc = field.T(c), Bc = field.B(c); // throw on a degenerate frame
+  const double l0 = edge_length_from_box(domain, Bc.determinant(), r);
   Eigen::JacobiSVD<Eigen::Matrix3d> svd(Tc);
   const double spacing = l0 * svd.singularValues().minCoeff();
 
@@ -107,24 +147,35 @@ Particles_in_domain<MeshDomain> lattice_particles(const MeshDomain& domain, cons
   CGAL::Real_timer timer;
   timer.start();
   std::unique_ptr<tbb::global_control> thread_limit;
-  if(threads > 0)
+  if(r.threads > 0)
     thread_limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
-                                                         std::size_t(threads));
+                                                         std::size_t(r.threads));
   out.boundary = std::make_unique<Domain_boundary<MeshDomain, K>>(domain, spacing);
   const double volume = imagined_volume<Domain_boundary<MeshDomain, K>, FrameField, Point_3>(*out.boundary, field);
   if(!(volume > 0)) fail("the domain is empty (no volume)");
-  if(!has_length) l = std::cbrt(volume * lattice.particles_per_cube / n_wanted);
-  const double n = volume * lattice.particles_per_cube / (l * l * l);
+  const double area = imagined_area<Domain_boundary<MeshDomain, K>, FrameField, Point_3>(*out.boundary, field);
+  const double l = r.has_length ? r.edge_length : lattice_edge_length(r.lattice, volume, area, r.number_of_particles);
+  const double n = lattice_particle_count(r.lattice, volume, area, l);
   if(n > maximum_number_of_particles)
     fail("the edge length " + std::to_string(l) + " would need about " + std::to_string(n) + " particles (at most " +
          std::to_string(maximum_number_of_particles) + ")");
   if(n < 1) fail("the edge length " + std::to_string(l) + " is larger than the domain (under one particle)");
-  if(o.levels < 0) o.levels = n >= 4000 ? 1 : 0; // one level unless the coarse lattice is too small
+  if(r.options.levels < 0) r.options.levels = n >= 4000 ? 1 : 0; // one level unless the coarse lattice is too small
 
-  Lattice_optimizer<FrameField, Domain_boundary<MeshDomain, K>, Point_3> optimizer(lattice, field, *out.boundary, l, o);
+  Lattice_optimizer<FrameField, Domain_boundary<MeshDomain, K>, Point_3> optimizer(r.lattice, field, *out.boundary, l,
+                                                                                   r.options);
   out.particles = optimizer.run();
   out.particles.time = timer.time();
   return out;
+}
+
+/// the field of the overloads without one: the domain's cross field, on a mesh about as fine as the lattice
+template <class MeshDomain>
+Frame_fields::Discrete_frame_field_3<typename Kernel_traits<typename MeshDomain::R::Point_3>::Kernel>
+default_frame_field(const MeshDomain& domain,
+                                                                                const Lattice_request& r)
+{
+  return domain_cross_field(domain, edge_length_from_box(domain, 1., r));
 }
 
 } // namespace internal
@@ -215,7 +266,33 @@ Tetrahedral_lattice_meshing::Lattice_particles_3<typename MeshDomain::R::Point_3
 lattice_particles_3(const MeshDomain& domain, const FrameField& field,
                     const NamedParameters& np = parameters::default_values())
 {
-  return Tetrahedral_lattice_meshing::internal::lattice_particles(domain, field, np).particles;
+  namespace TLM_internal = Tetrahedral_lattice_meshing::internal;
+  return TLM_internal::lattice_particles(domain, field, TLM_internal::read_lattice_request(np)).particles;
+}
+
+/*!
+ * \ingroup PkgTetrahedralLatticeMeshingRef
+ *
+ * the same with the boundary-aligned cross field of `Frame_fields::generate_cross_field_3()`
+ * (unit frames, one axis on the surface normal and along the feature curves), computed on a
+ * `make_mesh_3()` mesh of `domain` whose edges are about \f$ l^* \f$ long.
+ */
+template <class MeshDomain, class T, class Tag, class Base>
+Tetrahedral_lattice_meshing::Lattice_particles_3<typename MeshDomain::R::Point_3>
+lattice_particles_3(const MeshDomain& domain, const Named_function_parameters<T, Tag, Base>& np)
+{
+  namespace TLM_internal = Tetrahedral_lattice_meshing::internal;
+  const TLM_internal::Lattice_request r = TLM_internal::read_lattice_request(np);
+  return TLM_internal::lattice_particles(domain, TLM_internal::default_frame_field(domain, r), r).particles;
+}
+
+/// \ingroup PkgTetrahedralLatticeMeshingRef
+/// the same with the default named parameters
+template <class MeshDomain>
+Tetrahedral_lattice_meshing::Lattice_particles_3<typename MeshDomain::R::Point_3>
+lattice_particles_3(const MeshDomain& domain)
+{
+  return lattice_particles_3(domain, parameters::default_values());
 }
 
 } // namespace CGAL

@@ -25,6 +25,20 @@ namespace CGAL {
 namespace Tetrahedral_lattice_meshing {
 
 /// \ingroup PkgTetrahedralLatticeMeshingRef
+/// the last stage of `make_lattice_mesh_3()`, in the frame field's metric \f$ B^T B \f$
+enum class Lattice_mesh_optimization
+{
+  /// the particles' Delaunay triangulation as it is
+  NONE,
+  /// `gsm_optimize_mesh_3()` without vertex smoothing: energy-guided flips (the dissertation's
+  /// connectivity optimization), then the polishing of the cells under 30 degrees; the vertices
+  /// stay on the lattice except those of the cells the polishing lifts
+  FLIPS,
+  /// `gsm_optimize_mesh_3()` in full: vertex smoothing and flips, then the polishing
+  GSM
+};
+
+/// \ingroup PkgTetrahedralLatticeMeshingRef
 /// what `make_lattice_mesh_3()` did, for its `Tetrahedral_lattice_meshing::parameters::mesh_report` output
 struct Lattice_mesh_report
 {
@@ -32,10 +46,10 @@ struct Lattice_mesh_report
   double edge_length = 0;             ///< \f$ l^* \f$
   double particle_time = 0;           ///< seconds: boundary sampling and particle optimization
   double connection_time = 0;         ///< seconds: the complex made of the particles
-  double gsm_time = 0;                ///< seconds: GSM
+  double gsm_time = 0;                ///< seconds: the last stage (`Lattice_mesh_optimization`)
   std::size_t number_of_feature_edges = 0;
   std::size_t number_of_surface_facets = 0;
-  bool metric_is_anisotropic = false; ///< GSM ran in the metric \f$ B^T B \f$ (the frames are not all rotations)
+  bool metric_is_anisotropic = false; ///< the last stage ran in the metric \f$ B^T B \f$ (the frames are not all rotations)
 };
 
 namespace internal {
@@ -54,6 +68,73 @@ bool is_conformal(const FrameField& field, const std::vector<Point_3>& points)
   return true;
 }
 
+/// the last stage of `make_lattice_mesh_3()`: GSM in the field's metric \f$ B^T B \f$
+/// (isotropic if the frames are conformal), with or without vertex smoothing; `time_limit` 0 for none
+template <class C3T3, class MeshDomain, class FrameField>
+void optimize_lattice_mesh(C3T3& c3t3, const MeshDomain& domain, const FrameField& field,
+                           Lattice_mesh_optimization stage, int threads, double time_limit, Lattice_mesh_report& r)
+{
+  namespace GSM = GSM_mesh_optimization;
+  typedef typename MeshDomain::R::Point_3 Point_3;
+  if(stage == Lattice_mesh_optimization::NONE) return;
+  CGAL::Real_timer timer;
+  timer.start();
+  std::vector<Point_3> points;
+  for(auto v = c3t3.triangulation().finite_vertices_begin(); v != c3t3.triangulation().finite_vertices_end(); ++v)
+    points.push_back(Point_3(v->point().x(), v->point().y(), v->point().z()));
+  r.metric_is_anisotropic = !is_conformal(field, points);
+  auto gsm_np = GSM::parameters::smooth_vertices(stage == Lattice_mesh_optimization::GSM,
+      GSM::parameters::number_of_threads(threads, CGAL::parameters::maximum_running_time(time_limit)));
+  if(r.metric_is_anisotropic) {
+    auto metric = [&field](const Eigen::Vector3d& x) {
+      const Eigen::Matrix3d B = field.B(Point_3(x[0], x[1], x[2]));
+      return Eigen::Matrix3d(B.transpose() * B);
+    };
+    CGAL::gsm_optimize_mesh_3(c3t3, domain, GSM::parameters::metric_field(metric, gsm_np));
+  } else
+    CGAL::gsm_optimize_mesh_3(c3t3, domain, gsm_np);
+  r.gsm_time = timer.time();
+}
+
+template <class C3T3, class MeshDomain, class FrameField, class NamedParameters>
+C3T3 make_lattice_mesh(const MeshDomain& domain, const FrameField& field, const Lattice_request& request,
+                       const NamedParameters& np)
+{
+  namespace TLM = Tetrahedral_lattice_meshing;
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  if(request.lattice.type == Lattice_type::CUBIC)
+    throw std::invalid_argument("make_lattice_mesh_3: the cubic lattice makes hexahedra (Hex_dominant_meshing), "
+                                "not tetrahedra: use BCC or FCC");
+  const Lattice_mesh_optimization stage =
+      choose_parameter(get_parameter(np, TLM::internal_np::mesh_optimization), Lattice_mesh_optimization::FLIPS);
+  Lattice_mesh_report* report = choose_parameter(get_parameter(np, TLM::internal_np::mesh_report),
+                                                 static_cast<Lattice_mesh_report*>(nullptr));
+  Lattice_mesh_report local;
+  Lattice_mesh_report& r = report ? *report : local;
+  r = Lattice_mesh_report();
+
+  auto pd = lattice_particles(domain, field, request);
+  r.number_of_particles = pd.particles.size();
+  r.edge_length = pd.particles.edge_length;
+  r.particle_time = pd.particles.time;
+
+  CGAL::Real_timer timer;
+  timer.start();
+  C3T3 c3t3;
+  const Complex_report cr = connect_particles(c3t3, domain, *pd.boundary, pd.particles);
+  r.number_of_feature_edges = cr.number_of_feature_edges;
+  r.number_of_surface_facets = cr.number_of_surface_facets;
+  r.connection_time = timer.time();
+  if(c3t3.number_of_cells_in_complex() == 0)
+    throw std::invalid_argument("make_lattice_mesh_3: the particles make no cell inside the domain "
+                                "(edge length too large for it?)");
+  const double time_limit = request.options.time_limit;
+  const double left = time_limit > 0 ? (std::max)(1., time_limit - r.particle_time - r.connection_time) : 0.;
+  optimize_lattice_mesh(c3t3, domain, field, stage, request.threads, left, r);
+  return c3t3;
+}
+
 } // namespace internal
 } // namespace Tetrahedral_lattice_meshing
 
@@ -65,10 +146,11 @@ bool is_conformal(const FrameField& field, const std::vector<Point_3>& points)
  * Delaunay triangulation into a `Mesh_complex_3_in_triangulation_3` (cells labelled with the
  * domain's subdomain at their centroid, boundary facets with their surface patch, feature
  * edges along the sharp edges, corners, vertex dimensions and indices as `make_mesh_3()` sets
- * them), then optimized by `gsm_optimize_mesh_3()` in the field's metric
- * \f$ M = B^T B \f$ (isotropic when the frames are rotations), whose flips make the
- * connectivity follow the field and whose boundary sliding brings the boundary onto the
- * surface (dissertation 4.3.2, with CGAL's Delaunay triangulation and GSM in place of
+ * them; the flat cells of boundary particles lying on the surface left out), then optimized by
+ * `gsm_optimize_mesh_3()` in the field's metric \f$ M = B^T B \f$ (isotropic when the frames
+ * are rotations): by default with its energy-guided flips only, which make the connectivity
+ * follow the field while the vertices stay on the lattice, and its polishing of the cells
+ * under 30 degrees (dissertation 4.3.2, with CGAL's Delaunay triangulation and GSM in place of
  * GEOGRAM's restricted Voronoi diagram and TetGen).
  *
  * \tparam C3T3 a `Mesh_complex_3_in_triangulation_3` of a `Mesh_triangulation_3` of `MeshDomain`
@@ -77,9 +159,12 @@ bool is_conformal(const FrameField& field, const std::vector<Point_3>& points)
  *
  * \cgalNamedParamsBegin
  *   \cgalParamNBegin{all the named parameters of `lattice_particles_3()`}\cgalParamNEnd
- *   \cgalParamNBegin{Tetrahedral_lattice_meshing::parameters::optimize_with_gsm}
- *     \cgalParamDescription{whether GSM ends the meshing}
- *     \cgalParamType{`bool`} \cgalParamDefault{`true`}
+ *   \cgalParamNBegin{Tetrahedral_lattice_meshing::parameters::mesh_optimization}
+ *     \cgalParamDescription{the last stage: `NONE` (the Delaunay triangulation of the particles),
+ *       `FLIPS` (GSM's flips and polishing; the vertices stay on the lattice but for the
+ *       polished cells) or `GSM` (GSM in full, vertices smoothed too)}
+ *     \cgalParamType{`Tetrahedral_lattice_meshing::Lattice_mesh_optimization`}
+ *     \cgalParamDefault{`FLIPS`}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{Tetrahedral_lattice_meshing::parameters::mesh_report}
  *     \cgalParamDescription{receives the counts and the time of each stage}
@@ -87,8 +172,8 @@ bool is_conformal(const FrameField& field, const std::vector<Point_3>& points)
  *   \cgalParamNEnd
  * \cgalNamedParamsEnd
  *
- * `maximum_running_time` bounds the particle optimization; GSM gets the time left (at least
- * one second) when a limit is given.
+ * `maximum_running_time` bounds the particle optimization; the last stage gets the time left
+ * (at least one second) when a limit is given.
  *
  * \throw std::invalid_argument as `lattice_particles_3()`, before any work, on bad input;
  *   and if the particles give no cell inside the domain
@@ -97,55 +182,31 @@ template <class C3T3, class MeshDomain, class FrameField, class NamedParameters 
 C3T3 make_lattice_mesh_3(const MeshDomain& domain, const FrameField& field,
                          const NamedParameters& np = parameters::default_values())
 {
-  namespace TLM = Tetrahedral_lattice_meshing;
-  namespace GSM = GSM_mesh_optimization;
-  using CGAL::parameters::choose_parameter;
-  using CGAL::parameters::get_parameter;
-  typedef typename MeshDomain::R::Point_3 Point_3;
+  namespace TLM_internal = Tetrahedral_lattice_meshing::internal;
+  return TLM_internal::make_lattice_mesh<C3T3>(domain, field, TLM_internal::read_lattice_request(np), np);
+}
 
-  const TLM::Lattice_type type = choose_parameter(get_parameter(np, TLM::internal_np::lattice), TLM::Lattice_type::BCC);
-  if(type == TLM::Lattice_type::CUBIC)
-    throw std::invalid_argument("make_lattice_mesh_3: the cubic lattice makes hexahedra (Hex_dominant_meshing), "
-                                "not tetrahedra: use BCC or FCC");
-  const bool with_gsm = choose_parameter(get_parameter(np, TLM::internal_np::optimize_with_gsm), true);
-  const double time_limit = choose_parameter(get_parameter(np, CGAL::internal_np::maximum_running_time), 0.);
-  const int threads = choose_parameter(get_parameter(np, TLM::internal_np::number_of_threads), 0);
-  TLM::Lattice_mesh_report* report = choose_parameter(get_parameter(np, TLM::internal_np::mesh_report),
-                                                      static_cast<TLM::Lattice_mesh_report*>(nullptr));
-  TLM::Lattice_mesh_report local;
-  TLM::Lattice_mesh_report& r = report ? *report : local;
+/*!
+ * \ingroup PkgTetrahedralLatticeMeshingRef
+ *
+ * the same with the boundary-aligned cross field of `Frame_fields::generate_cross_field_3()`
+ * (unit frames, one axis on the surface normal and along the feature curves), computed on a
+ * `make_mesh_3()` mesh of `domain` whose edges are about \f$ l^* \f$ long.
+ */
+template <class C3T3, class MeshDomain, class T, class Tag, class Base>
+C3T3 make_lattice_mesh_3(const MeshDomain& domain, const Named_function_parameters<T, Tag, Base>& np)
+{
+  namespace TLM_internal = Tetrahedral_lattice_meshing::internal;
+  const TLM_internal::Lattice_request r = TLM_internal::read_lattice_request(np);
+  return TLM_internal::make_lattice_mesh<C3T3>(domain, TLM_internal::default_frame_field(domain, r), r, np);
+}
 
-  auto pd = TLM::internal::lattice_particles(domain, field, np);
-  r.number_of_particles = pd.particles.size();
-  r.edge_length = pd.particles.edge_length;
-  r.particle_time = pd.particles.time;
-
-  CGAL::Real_timer timer;
-  timer.start();
-  C3T3 c3t3;
-  const TLM::internal::Complex_report cr = TLM::internal::connect_particles(c3t3, domain, *pd.boundary, pd.particles);
-  r.number_of_feature_edges = cr.number_of_feature_edges;
-  r.number_of_surface_facets = cr.number_of_surface_facets;
-  r.connection_time = timer.time();
-  if(c3t3.number_of_cells_in_complex() == 0)
-    throw std::invalid_argument("make_lattice_mesh_3: the particles make no cell inside the domain "
-                                "(edge length too large for it?)");
-  if(!with_gsm) return c3t3;
-
-  timer.reset();
-  const double left = time_limit > 0 ? (std::max)(1., time_limit - pd.particles.time - r.connection_time) : 0.;
-  auto gsm_np = GSM::parameters::number_of_threads(threads, CGAL::parameters::maximum_running_time(left));
-  r.metric_is_anisotropic = !TLM::internal::is_conformal(field, pd.particles.points);
-  if(r.metric_is_anisotropic) {
-    auto metric = [&field](const Eigen::Vector3d& x) {
-      const Eigen::Matrix3d B = field.B(Point_3(x[0], x[1], x[2]));
-      return Eigen::Matrix3d(B.transpose() * B);
-    };
-    CGAL::gsm_optimize_mesh_3(c3t3, domain, GSM::parameters::metric_field(metric, gsm_np));
-  } else
-    CGAL::gsm_optimize_mesh_3(c3t3, domain, gsm_np);
-  r.gsm_time = timer.time();
-  return c3t3;
+/// \ingroup PkgTetrahedralLatticeMeshingRef
+/// the same with the default named parameters
+template <class C3T3, class MeshDomain>
+C3T3 make_lattice_mesh_3(const MeshDomain& domain)
+{
+  return make_lattice_mesh_3<C3T3>(domain, parameters::default_values());
 }
 
 } // namespace CGAL

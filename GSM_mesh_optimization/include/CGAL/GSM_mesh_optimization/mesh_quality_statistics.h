@@ -39,6 +39,7 @@ struct Mesh_quality_statistics
   double min_dihedral_angle = 0;      ///< theta_min
   double max_dihedral_angle = 0;      ///< theta_max
   double mean_min_dihedral_angle = 0; ///< mean over the cells of their smallest dihedral angle
+  double mean_max_dihedral_angle = 0; ///< mean over the cells of their largest dihedral angle
   /// number of cells whose smallest dihedral angle is below 10, 20, 30 and 40 degrees
   std::array<std::size_t, 4> n_min_dihedral_below{{0, 0, 0, 0}};
   double min_radius_ratio = 0;  ///< gamma_min
@@ -70,6 +71,7 @@ struct Mesh_quality_statistics
     min_dihedral_angle = (std::min)(min_dihedral_angle, tmin);
     max_dihedral_angle = (std::max)(max_dihedral_angle, tmax);
     mean_min_dihedral_angle += tmin;
+    mean_max_dihedral_angle += tmax;
     for(std::size_t i = 0; i < dihedral_thresholds.size(); ++i)
       if(tmin < dihedral_thresholds[i]) ++n_min_dihedral_below[i];
     min_radius_ratio = (std::min)(min_radius_ratio, q.radius_ratio);
@@ -89,6 +91,7 @@ struct Mesh_quality_statistics
     if(number_of_cells == 0) return;
     const double n = double(number_of_cells);
     mean_min_dihedral_angle /= n;
+    mean_max_dihedral_angle /= n;
     mean_radius_ratio /= n;
     mean_edge_radius_ratio /= n;
     mean_condition /= n;

@@ -28,6 +28,7 @@ enum metric_field_t { metric_field };
 enum convergence_threshold_t { convergence_threshold };
 enum number_of_threads_t { number_of_threads };
 enum split_edges_t { split_edges };
+enum smooth_vertices_t { smooth_vertices };
 enum sliver_bound_t { sliver_bound };
 
 } // namespace internal_np
@@ -50,6 +51,8 @@ CGAL_VVM_ADD_NAMED_PARAMETER(number_of_threads)
 CGAL_VVM_ADD_NAMED_PARAMETER(sliver_bound)
 /// `bool`: whether the final polishing may split interior edges, adding vertices (default `true`)
 CGAL_VVM_ADD_NAMED_PARAMETER(split_edges)
+/// `bool`: whether the rounds move vertices (`false`: flips only, e.g. to keep a lattice; default `true`)
+CGAL_VVM_ADD_NAMED_PARAMETER(smooth_vertices)
 
 } // namespace parameters
 } // namespace GSM_mesh_optimization

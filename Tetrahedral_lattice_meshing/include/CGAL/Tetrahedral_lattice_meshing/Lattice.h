@@ -55,6 +55,10 @@ struct Lattice
   double closest = 0;
   /// particles per cube of edge \f$ l^* \f$ (BCC 2, FCC 4, cubic 1)
   double particles_per_cube = 1;
+  /// the particles a boundary of area \f$ l^{*2} \f$ adds to the volume's count: the lattice
+  /// closes with a full layer on the boundary, half a layer more than the volume holds
+  /// (half the particles of a (100) plane: BCC 1/2, FCC 1, cubic 1/2)
+  double particles_per_boundary_square = 0.5;
   /// \f$ w \f$: the weight of the positive kernel (eq. 4.6; 1 for BCC and FCC, eq. 4.2)
   double positive_weight = 1;
   /// \f$ \sigma \f$: the kernel width (0.3 \f$ l_{closest} \f$; 0.3 for the cubic lattice, Table 4.5)
@@ -95,6 +99,7 @@ struct Lattice
         }
       l.closest = std::sqrt(2.) / 2;
       l.particles_per_cube = 4;
+      l.particles_per_boundary_square = 1;
     } else {
       l.closest = 1;
       l.particles_per_cube = 1;

@@ -18,6 +18,7 @@
 #include <cmath>
 #include <set>
 #include <utility>
+#include <vector>
 
 namespace CGAL {
 namespace Tetrahedral_lattice_meshing {
@@ -80,6 +81,32 @@ Alignment_statistics alignment_statistics(const C3T3& c3t3, const FrameField& fi
     s.standard_deviation = std::sqrt((std::max)(0., sum2 / double(s.number_of_edges) - s.mean * s.mean));
   }
   return s;
+}
+
+/*!
+ * \ingroup PkgTetrahedralLatticeMeshingRef
+ * returns the mean alignment error (degrees) of the six edges of each cell in the complex of
+ * `c3t3`, in the order of `cells_in_complex_begin()`: a cell data array for
+ * `GSM_mesh_optimization::IO::write_VTU_with_quality()`.
+ */
+template <class C3T3, class FrameField>
+std::vector<double> cell_alignment_errors(const C3T3& c3t3, const FrameField& field, const Lattice& lattice)
+{
+  typedef typename FrameField::Point_3 Point_3;
+  using GSM_mesh_optimization::internal::to_eigen;
+  const auto& tr = c3t3.triangulation();
+  std::vector<double> errors;
+  errors.reserve(c3t3.number_of_cells_in_complex());
+  for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c) {
+    double sum = 0;
+    for(int i = 0; i < 4; ++i)
+      for(int j = i + 1; j < 4; ++j) {
+        const Eigen::Vector3d p = to_eigen(tr.point(c, i)), q = to_eigen(tr.point(c, j)), m = 0.5 * (p + q);
+        sum += edge_alignment_error(lattice, field.B(Point_3(m[0], m[1], m[2])), q - p);
+      }
+    errors.push_back(sum / 6.);
+  }
+  return errors;
 }
 
 } // namespace Tetrahedral_lattice_meshing

@@ -28,7 +28,7 @@ enum kernel_width_t { kernel_width };
 enum neighbor_radius_t { neighbor_radius };
 enum multiresolution_levels_t { multiresolution_levels };
 enum number_of_threads_t { number_of_threads };
-enum optimize_with_gsm_t { optimize_with_gsm };
+enum mesh_optimization_t { mesh_optimization };
 enum mesh_report_t { mesh_report };
 
 } // namespace internal_np
@@ -49,8 +49,8 @@ CGAL_VVM_ADD_NAMED_PARAMETER(neighbor_radius)
 CGAL_VVM_ADD_NAMED_PARAMETER(multiresolution_levels)
 /// `int`: the number of threads (default 0: TBB's choice); the result does not depend on it
 CGAL_VVM_ADD_NAMED_PARAMETER(number_of_threads)
-/// `bool`: whether `make_lattice_mesh_3()` ends with GSM in the frame field's metric (default `true`)
-CGAL_VVM_ADD_NAMED_PARAMETER(optimize_with_gsm)
+/// `Lattice_mesh_optimization`: how `make_lattice_mesh_3()` ends (default `FLIPS`)
+CGAL_VVM_ADD_NAMED_PARAMETER(mesh_optimization)
 /// `Lattice_mesh_report*`: receives what `make_lattice_mesh_3()` did (default: none)
 CGAL_VVM_ADD_NAMED_PARAMETER(mesh_report)
 

@@ -12,6 +12,7 @@
 #include <CGAL/IO/output_to_vtu.h>
 
 #include <ostream>
+#include <stdexcept>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -32,6 +33,9 @@ namespace IO {
  * \tparam MetricB a callable `Eigen::Matrix3d(const Point_3&)` giving the matrix
  *   by which each cell is mapped (at its centroid) before it is measured; the
  *   identity by default.
+ * \param extra_cell_data more cell data arrays, named, one value per cell in the complex in
+ *   the order of `cells_in_complex_begin()` (e.g. the alignment error of
+ *   `Tetrahedral_lattice_meshing::cell_alignment_errors()`)
  * \param os an output stream, opened in binary mode for `CGAL::IO::BINARY`
  * \param mode `CGAL::IO::BINARY` (raw appended data, default) or `CGAL::IO::ASCII`
  *   (17 significant digits)
@@ -39,7 +43,8 @@ namespace IO {
 template <class C3T3, class MetricB = internal::Identity_metric>
 void write_VTU_with_quality(std::ostream& os, const C3T3& c3t3,
                             CGAL::IO::Mode mode = CGAL::IO::BINARY,
-                            const MetricB& B = MetricB())
+                            const MetricB& B = MetricB(),
+                            const std::vector<std::pair<std::string, std::vector<double>>>& extra_cell_data = {})
 {
   typedef typename C3T3::Triangulation Tr;
   typedef typename Tr::Geom_traits::Point_3 Bare_point;
@@ -71,6 +76,13 @@ void write_VTU_with_quality(std::ostream& os, const C3T3& c3t3,
       {"edge_radius_ratio", Attributes(&edge_radius_ratio)},
       {"condition", Attributes(&condition)},
       {"volume", Attributes(&volume)}};
+  for(const auto& data : extra_cell_data) {
+    if(data.second.size() != volume.size())
+      throw std::invalid_argument("write_VTU_with_quality: the cell data '" + data.first + "' has " +
+                                  std::to_string(data.second.size()) + " values for " +
+                                  std::to_string(volume.size()) + " cells");
+    attributes.emplace_back(data.first.c_str(), Attributes(&data.second));
+  }
   // CGAL 5.5.1 writes BINARY files without the closing </AppendedData> tag, which
   // strict XML readers (meshio, Python's ElementTree) reject: write to a buffer
   // and close the element.

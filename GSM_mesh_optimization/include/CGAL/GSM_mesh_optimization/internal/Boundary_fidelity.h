@@ -121,7 +121,8 @@ private:
   // segment from `s - reach` to `s + reach`, if it lies on `patch`; else 0
   double distance_along(const Bare_point& s, Vector_3 reach, const Surface_patch_index& patch) const
   {
-    const Vector_3 unit = reach / std::sqrt(CGAL::to_double(reach.squared_length()));
+    const double length = std::sqrt(CGAL::to_double(reach.squared_length()));
+    const Vector_3 unit = reach / length;
     double d = 0;
     bool on_patch = false;
     for(int k = 0; k < max_shrinks; ++k) {
@@ -130,7 +131,7 @@ private:
       if(std::get<2>(i) != 2) break;
       d = std::sqrt(CGAL::to_double(CGAL::squared_distance(s, std::get<0>(i))));
       on_patch = domain_->surface_patch_index(std::get<1>(i)) == patch;
-      if(!(d > 0)) break;
+      if(!(d > 1e-9 * length)) break; // a shorter segment would be a point
       reach = unit * (0.99 * d);
     }
     return on_patch ? d : 0;

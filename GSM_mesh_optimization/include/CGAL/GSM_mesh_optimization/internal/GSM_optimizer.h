@@ -57,6 +57,7 @@ struct GSM_options
   double time_limit = 0; // seconds; 0: none
   double convergence = 1e-4;
   bool do_flip = true;
+  bool do_smooth = true;
   double sliver_bound = 30; // degrees; 0: no polishing
   bool do_split = true;
   bool freeze_boundary = false;
@@ -99,7 +100,7 @@ public:
       Round_report report;
       report.round = round;
       const double smoothing_start = timer.time();
-      report.number_of_moves = smoothing_pass(sum, timer);
+      if(options_.do_smooth) report.number_of_moves = smoothing_pass(sum, timer);
       const double flips_start = timer.time();
       if(options_.do_flip && !time_is_up(timer))
         for(int pass = 0; pass < max_flip_passes; ++pass) {

@@ -410,19 +410,28 @@ private:
   }
 
   // the point of the curve at the arc length from the vertex that matches the
-  // displacement to `p` along the tangent, strictly between the two neighbors
+  // displacement to `p` along the tangent, strictly between the two neighbors.
+  // The neighbors' distances along the curve are bounded by their chords, and the
+  // curve's direction at the vertex is found with `construct_point_on_curve()`:
+  // CGAL 5.5.1's `signed_geodesic_distance()` can loop forever on points that its
+  // two ways of locating a point on a polyline place on different segments.
   bool project_on_curve(const Ring& r, Bare_point& p) const
   {
     if constexpr(Mesh_3::internal::Has_features<MeshDomain>::value) {
       const Bare_point o = bare(r.v);
-      const Eigen::Vector3d t = curve_tangent(r);
-      const double s = t.dot(Energy::to_eigen(p) - Energy::to_eigen(o));
-      // signed arc lengths to the two neighbors (on a cycle, the shorter way)
-      const double d0 = CGAL::to_double(domain_->signed_geodesic_distance(o, bare(r.curve_neighbors[0]), r.curve));
-      const double d1 = CGAL::to_double(domain_->signed_geodesic_distance(o, bare(r.curve_neighbors[1]), r.curve));
+      const Eigen::Vector3d eo = Energy::to_eigen(o), t = curve_tangent(r);
+      const Eigen::Vector3d v0 = Energy::to_eigen(bare(r.curve_neighbors[0])) - eo,
+                            v1 = Energy::to_eigen(bare(r.curve_neighbors[1])) - eo;
+      const double step = 0.01 * (std::min)(v0.norm(), v1.norm());
+      if(!(step > 0)) return false;
+      // along the curve's orientation (the vertex is inside the curve: both neighbors are on it)
+      const Eigen::Vector3d forward = Energy::to_eigen(domain_->construct_point_on_curve(o, r.curve, step)) - eo;
+      const double s0 = forward.dot(v0), s1 = forward.dot(v1);
+      if(!(s0 * s1 < 0)) return false; // the neighbors must be on both sides
+      const double d0 = s0 > 0 ? v0.norm() : -v0.norm(), d1 = s1 > 0 ? v1.norm() : -v1.norm();
       const double lo = (std::min)(d0, d1), hi = (std::max)(d0, d1);
-      if(!(lo < 0 && hi > 0)) return false;
-      // the tangent points from neighbor 0 to neighbor 1: orient s with the arc lengths
+      const double s = t.dot(Energy::to_eigen(p) - eo);
+      // the tangent points from neighbor 0 to neighbor 1: orient s with the curve
       const double arc = d1 > d0 ? s : -s;
       if(!(arc > 0.9 * lo && arc < 0.9 * hi)) return false;
       p = domain_->construct_point_on_curve(o, r.curve, arc);

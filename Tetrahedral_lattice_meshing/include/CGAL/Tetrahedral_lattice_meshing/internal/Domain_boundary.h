@@ -144,6 +144,25 @@ public:
     return c;
   }
 
+  /// the point of the domain's own feature curve nearest to `p`, a point of the sampled sharp
+  /// edges: Mesh_3's curve queries (geodesic distances) expect points on the curve itself
+  Eigen::Vector3d point_on_curve(const Eigen::Vector3d& p) const
+  {
+    CGAL_precondition(has_sharp_edges());
+    if constexpr(CGAL::Mesh_3::internal::Has_features<MeshDomain>::value) {
+      const auto r = edge_tree_.closest_point_and_primitive(Point_3(p[0], p[1], p[2]));
+      const std::size_t s = std::size_t(r.second - segments_.begin());
+      const Eigen::Vector3d a = eig(segments_[s].source()), b = eig(segments_[s].target()), q = eig(r.first);
+      const double t = (q - a).norm() / (b - a).norm();
+      if(t <= 0) return a;
+      if(t >= 1) return b;
+      const auto x = domain_.construct_point_on_curve(segments_[s].source(), curve_indices_[segment_curves_[s]],
+                                                      t * segment_arc_lengths_[s]);
+      return eig(x);
+    } else
+      return p;
+  }
+
   const std::vector<Eigen::Vector3d>& corners() const { return corners_; }
   const std::vector<int>& corner_numbers() const { return corner_numbers_; }
 
@@ -197,6 +216,15 @@ private:
       segments_.emplace_back(Point_3(a[0], a[1], a[2]), Point_3(b[0], b[1], b[2]));
       segment_tangents_.push_back((b - a).normalized());
       segment_curves_.push_back(it.first->second);
+      // the chord's length, signed with the curve's orientation (found by a step along the curve:
+      // CGAL 5.5.1's signed_geodesic_distance() can loop forever on some point pairs)
+      if constexpr(CGAL::Mesh_3::internal::Has_features<MeshDomain>::value) {
+        const double step = 0.01 * (b - a).norm();
+        Eigen::Vector3d forward = eig(domain_.construct_point_on_curve(segments_.back().source(), ci, step)) - a;
+        if(!(forward.norm() > 0.5 * step)) // at the end of the curve: step back
+          forward = a - eig(domain_.construct_point_on_curve(segments_.back().source(), ci, -step));
+        segment_arc_lengths_.push_back(forward.dot(b - a) >= 0 ? (b - a).norm() : -(b - a).norm());
+      }
     }
     std::map<Corner_index, int> corner_number;
     for(auto v = c3t3.vertices_in_complex_begin(); v != c3t3.vertices_in_complex_end(); ++v) {
@@ -234,6 +262,7 @@ private:
   std::vector<Segment_3> segments_;
   std::vector<Eigen::Vector3d> segment_tangents_;
   std::vector<int> segment_curves_;
+  std::vector<double> segment_arc_lengths_; // chord lengths, signed with the domain's curve
   std::vector<Eigen::Vector3d> corners_;
   std::vector<int> corner_numbers_;
   std::vector<std::array<Eigen::Vector3d, 4>> cells_;

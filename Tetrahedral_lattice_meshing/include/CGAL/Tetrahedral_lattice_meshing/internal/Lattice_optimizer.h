@@ -58,6 +58,44 @@ double imagined_volume(const Boundary& boundary, const FrameField& field)
   return std::accumulate(v.begin(), v.end(), 0.);
 }
 
+/// the area of the domain's boundary measured in the imagined space, over the boundary's triangles
+template <class Boundary, class FrameField, class Point_3>
+double imagined_area(const Boundary& boundary, const FrameField& field)
+{
+  const auto& triangles = boundary.triangles();
+  std::vector<double> a(triangles.size());
+  parallel_for_each_index(triangles.size(), [&](std::size_t k) {
+    const auto& t = triangles[k];
+    const Eigen::Vector3d p0 = to_vector(t[0].x(), t[0].y(), t[0].z()), p1 = to_vector(t[1].x(), t[1].y(), t[1].z()),
+                          p2 = to_vector(t[2].x(), t[2].y(), t[2].z()), c = (p0 + p1 + p2) / 3.;
+    const Eigen::Matrix3d B = field.B(Point_3(c[0], c[1], c[2]));
+    a[k] = 0.5 * (B * (p1 - p0)).cross(B * (p2 - p0)).norm();
+  });
+  return std::accumulate(a.begin(), a.end(), 0.);
+}
+
+/// the number of particles of a lattice of edge `l` in a domain of imagined volume `volume`
+/// and boundary area `area`
+inline double lattice_particle_count(const Lattice& lattice, double volume, double area, double l)
+{
+  return volume * lattice.particles_per_cube / (l * l * l) + area * lattice.particles_per_boundary_square / (l * l);
+}
+
+/// the edge length whose lattice has `n` particles (the inverse of `lattice_particle_count()`)
+inline double lattice_edge_length(const Lattice& lattice, double volume, double area, double n)
+{
+  // n = a x^3 + b x^2 in x = 1/l, increasing: Newton from the volume-only root, which is above it
+  const double a = volume * lattice.particles_per_cube, b = area * lattice.particles_per_boundary_square;
+  double x = std::cbrt(n / a);
+  for(int i = 0; i < 50; ++i) {
+    const double f = a * x * x * x + b * x * x - n, df = 3 * a * x * x + 2 * b * x;
+    const double step = f / df;
+    x -= step;
+    if(std::abs(step) < 1e-14 * x) break;
+  }
+  return 1. / x;
+}
+
 template <class FrameField, class Boundary, class Point_3>
 class Lattice_optimizer
 {
@@ -132,7 +170,8 @@ private:
     std::partial_sum(w.begin(), w.end(), w.begin());
     const double volume = w.empty() ? 0. : w.back();
     const double l = s.edge_length();
-    const std::size_t n = std::size_t(std::llround(volume * lattice_.particles_per_cube / (l * l * l)));
+    const double area = imagined_area<Boundary, FrameField, Point_3>(boundary_, field_);
+    const std::size_t n = std::size_t(std::llround(lattice_particle_count(lattice_, volume, area, l)));
     for(std::size_t k = 0; k < boundary_.corners().size(); ++k)
       s.add(boundary_.corners()[k], Particle_kind::CORNER, boundary_.corner_numbers()[k]);
     CGAL::Random random(o_.seed);

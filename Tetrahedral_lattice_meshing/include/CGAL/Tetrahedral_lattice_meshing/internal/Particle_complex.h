@@ -78,7 +78,12 @@ Complex_report connect_particles(C3T3& c3t3, const MeshDomain& domain, const Bou
   // Hilbert order for insertion speed, handles kept per particle
   std::vector<Bare_point> points;
   points.reserve(n);
-  for(const Point_3& p : particles.points) points.emplace_back(p.x(), p.y(), p.z());
+  for(std::size_t i = 0; i < n; ++i) {
+    Eigen::Vector3d p(particles.points[i].x(), particles.points[i].y(), particles.points[i].z());
+    // sharp-edge particles sit on the sampled chords: put them on the domain's curve itself
+    if(particles.kinds[i] == Particle_kind::SHARP_EDGE) p = boundary.point_on_curve(p);
+    points.emplace_back(p[0], p[1], p[2]);
+  }
   std::vector<std::size_t> order(n);
   std::iota(order.begin(), order.end(), std::size_t(0));
   typedef CGAL::Spatial_sort_traits_adapter_3<typename Tr::Geom_traits,
@@ -103,11 +108,27 @@ Complex_report connect_particles(C3T3& c3t3, const MeshDomain& domain, const Bou
     const auto& p = tr.geom_traits().construct_point_3_object()(tr.point(v));
     return Eigen::Vector3d(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
   };
-  // cells: the subdomain at the centroid
+  auto kind = [&](const Vertex_handle& v) {
+    auto it = particle_of.find(v);
+    return it == particle_of.end() ? Particle_kind::FREE : particles.kinds[it->second];
+  };
+  // cells: the subdomain at the centroid, except the flat cells of boundary particles lying
+  // on the surface (four particles of a planar patch), whose centroid is on it too
   const auto is_in = domain.is_in_domain_object();
   for(Cell_handle c : tr.finite_cell_handles()) {
-    Eigen::Vector3d g = Eigen::Vector3d::Zero();
-    for(int k = 0; k < 4; ++k) g += 0.25 * eig(c->vertex(k));
+    std::array<Eigen::Vector3d, 4> p;
+    bool all_boundary = true;
+    for(int k = 0; k < 4; ++k) {
+      p[k] = eig(c->vertex(k));
+      all_boundary = all_boundary && kind(c->vertex(k)) != Particle_kind::FREE;
+    }
+    const Eigen::Vector3d g = 0.25 * (p[0] + p[1] + p[2] + p[3]);
+    if(all_boundary && is_flat(p)) {
+      double longest = 0;
+      for(int i = 0; i < 4; ++i)
+        for(int j = i + 1; j < 4; ++j) longest = (std::max)(longest, (p[i] - p[j]).norm());
+      if(boundary.closest_on_surface(g).distance < 0.05 * longest) continue;
+    }
     const auto s = is_in(typename MeshDomain::Point_3(g[0], g[1], g[2]));
     if(s && *s != Subdomain_index()) {
       c3t3.add_to_complex(c, *s);
@@ -116,14 +137,10 @@ Complex_report connect_particles(C3T3& c3t3, const MeshDomain& domain, const Bou
   }
   // Flat cells of boundary particles (four particles of a planar face, or a sliver across
   // a curved boundary) with a facet on the boundary are outside: peel them, layer by layer.
-  auto kind = [&](const Vertex_handle& v) {
-    auto it = particle_of.find(v);
-    return it == particle_of.end() ? Particle_kind::FREE : particles.kinds[it->second];
-  };
   auto label = [&](const Cell_handle& c) {
     return (!tr.is_infinite(c) && c3t3.is_in_complex(c)) ? c3t3.subdomain_index(c) : Subdomain_index();
   };
-  for(int pass = 0; pass < 8; ++pass) {
+  for(int pass = 0; pass < 100; ++pass) {
     std::vector<Cell_handle> peel;
     for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c) {
       bool all_boundary = true, on_boundary = false;
@@ -166,6 +183,16 @@ Complex_report connect_particles(C3T3& c3t3, const MeshDomain& domain, const Bou
       for(const Vertex_handle& w : {u, v})
         if(kind(w) == Particle_kind::SHARP_EDGE && particles.features[particle_of[w]] != c.feature) same = false;
       if(!same) continue;
+      // and it must be on the boundary: two surface facets around it, at least
+      int facets = 0;
+      auto first = tr.incident_cells(e), cell = first;
+      do {
+        auto next = cell;
+        ++next;
+        if(label(cell) != label(next)) ++facets;
+        cell = next;
+      } while(cell != first);
+      if(facets < 2) continue;
       c3t3.add_to_complex(u, v, boundary.curve_indices()[std::size_t(c.feature)]);
       curve_of[u] = curve_of[v] = c.feature;
       ++report.number_of_feature_edges;

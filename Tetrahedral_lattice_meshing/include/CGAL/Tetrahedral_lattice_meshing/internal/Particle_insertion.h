@@ -62,14 +62,23 @@ std::vector<Insertion_candidate> empty_sites(const System& s, double min_distanc
     }
   });
   std::vector<Insertion_candidate> out;
-  for(auto& l : local)
-    for(auto& c : l) {
+  for(auto& site : local)
+    for(auto& c : site) {
       if(s.boundary() && !s.boundary()->inside(c.point)) { // sequential: the domain's inside test
         const auto b = s.boundary()->closest_on_surface(c.point);
         c.point = b.point;
         c.kind = Particle_kind::BOUNDARY;
         c.feature = b.feature;
         c.direction = b.direction;
+        if(s.boundary()->has_sharp_edges()) { // near a sharp edge: on it, as the projection would put it
+          const auto e = s.boundary()->closest_on_sharp_edge(c.point);
+          if((s.B(c.point) * (e.point - c.point)).norm() <= 0.3 * l) {
+            c.point = e.point;
+            c.kind = Particle_kind::SHARP_EDGE;
+            c.feature = e.feature;
+            c.direction = e.direction;
+          }
+        }
         if(!far_enough(c.point)) continue;
       }
       out.push_back(c);

@@ -1,0 +1,45 @@
+// Copyright (c) 2026 VVM contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// compare_tet_meshers: lattice meshes (BCC, FCC, with or without GSM) against
+// make_mesh_3 with CGAL's optimizers and GSM, at the same vertex count
+// (dissertation Tables 4.2-4.4).
+
+#ifndef VVM_BENCHMARK_COMPARE_TET_MESHERS_H
+#define VVM_BENCHMARK_COMPARE_TET_MESHERS_H
+
+#include <cstddef>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace vvm_tet_benchmark {
+
+struct Options
+{
+  std::string input;                // a surface file, or cube / sphere / torus
+  std::size_t target_vertices = 10000;
+  double features_angle = -1;       // < 0: not given (60 for the cube)
+  std::string field = "identity";   // identity, cross, rotation-y, fig4.8, fig4.9
+  std::vector<std::string> methods; // empty: the default list
+  int threads = 0;
+  std::string json_file;
+  std::string out_dir;
+  unsigned int seed = 0;
+  bool verbose = false;
+};
+
+// a user error (bad command line or input): printed with the usage, exit code 2
+struct Input_error : std::runtime_error
+{
+  using std::runtime_error::runtime_error;
+};
+
+std::vector<std::string> default_methods();
+bool is_implicit_domain_name(const std::string& name);
+int run_implicit_domain(const Options& options);
+int run_polyhedral_domain(const Options& options);
+
+} // namespace vvm_tet_benchmark
+
+#endif // VVM_BENCHMARK_COMPARE_TET_MESHERS_H
