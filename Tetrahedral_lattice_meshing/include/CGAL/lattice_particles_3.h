@@ -22,6 +22,7 @@
 #include <tbb/global_control.h>
 
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -151,15 +152,16 @@ Particles_in_domain<MeshDomain> lattice_particles(const MeshDomain& domain, cons
     thread_limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
                                                          std::size_t(r.threads));
   out.boundary = std::make_unique<Domain_boundary<MeshDomain, K>>(domain, spacing);
-  const double volume = imagined_volume<Domain_boundary<MeshDomain, K>, FrameField, Point_3>(*out.boundary, field);
-  if(!(volume > 0)) fail("the domain is empty (no volume)");
-  const double area = imagined_area<Domain_boundary<MeshDomain, K>, FrameField, Point_3>(*out.boundary, field);
-  const double l = r.has_length ? r.edge_length : lattice_edge_length(r.lattice, volume, area, r.number_of_particles);
-  const double n = lattice_particle_count(r.lattice, volume, area, l);
+  const Domain_measures measures = domain_measures<Domain_boundary<MeshDomain, K>, FrameField, Point_3>(*out.boundary, field);
+  if(!(measures.volume > 0)) fail("the domain is empty (no volume)");
+  const double l = r.has_length ? r.edge_length : lattice_edge_length(r.lattice, measures, r.number_of_particles);
+  if(!(l < std::numeric_limits<double>::infinity())) fail("too few particles for the domain's corners");
+  const double n = lattice_particle_count(r.lattice, measures, l);
   if(n > maximum_number_of_particles)
     fail("the edge length " + std::to_string(l) + " would need about " + std::to_string(n) + " particles (at most " +
          std::to_string(maximum_number_of_particles) + ")");
-  if(n < 1) fail("the edge length " + std::to_string(l) + " is larger than the domain (under one particle)");
+  if(measures.volume * r.lattice.particles_per_cube / (l * l * l) < 1)
+    fail("the edge length " + std::to_string(l) + " is larger than the domain (under one lattice cell in it)");
   if(r.options.levels < 0) r.options.levels = n >= 4000 ? 1 : 0; // one level unless the coarse lattice is too small
 
   Lattice_optimizer<FrameField, Domain_boundary<MeshDomain, K>, Point_3> optimizer(r.lattice, field, *out.boundary, l,

@@ -424,9 +424,17 @@ private:
                             v1 = Energy::to_eigen(bare(r.curve_neighbors[1])) - eo;
       const double step = 0.01 * (std::min)(v0.norm(), v1.norm());
       if(!(step > 0)) return false;
-      // along the curve's orientation (the vertex is inside the curve: both neighbors are on it)
-      const Eigen::Vector3d forward = Energy::to_eigen(domain_->construct_point_on_curve(o, r.curve, step)) - eo;
-      const double s0 = forward.dot(v0), s1 = forward.dot(v1);
+      // the neighbors' sides along the curve's orientation: a step along a loop (distances
+      // wrap around), the order along an open curve
+      double s0, s1;
+      if(domain_->is_loop(r.curve)) {
+        const Eigen::Vector3d forward = Energy::to_eigen(domain_->construct_point_on_curve(o, r.curve, step)) - eo;
+        s0 = forward.dot(v0);
+        s1 = forward.dot(v1);
+      } else {
+        s0 = double(int(domain_->distance_sign(o, bare(r.curve_neighbors[0]), r.curve)));
+        s1 = double(int(domain_->distance_sign(o, bare(r.curve_neighbors[1]), r.curve)));
+      }
       if(!(s0 * s1 < 0)) return false; // the neighbors must be on both sides
       const double d0 = s0 > 0 ? v0.norm() : -v0.norm(), d1 = s1 > 0 ? v1.norm() : -v1.norm();
       const double lo = (std::min)(d0, d1), hi = (std::max)(d0, d1);

@@ -216,13 +216,14 @@ private:
       segments_.emplace_back(Point_3(a[0], a[1], a[2]), Point_3(b[0], b[1], b[2]));
       segment_tangents_.push_back((b - a).normalized());
       segment_curves_.push_back(it.first->second);
-      // the chord's length, signed with the curve's orientation (found by a step along the curve:
-      // CGAL 5.5.1's signed_geodesic_distance() can loop forever on some point pairs)
+      // the chord's length, signed with the curve's orientation (CGAL 5.5.1's
+      // signed_geodesic_distance() can loop forever on some point pairs)
       if constexpr(CGAL::Mesh_3::internal::Has_features<MeshDomain>::value) {
-        const double step = 0.01 * (b - a).norm();
-        Eigen::Vector3d forward = eig(domain_.construct_point_on_curve(segments_.back().source(), ci, step)) - a;
-        if(!(forward.norm() > 0.5 * step)) // at the end of the curve: step back
-          forward = a - eig(domain_.construct_point_on_curve(segments_.back().source(), ci, -step));
+        Eigen::Vector3d forward = b - a;
+        if(domain_.is_loop(ci)) // a step along the loop (distances wrap around)
+          forward = eig(domain_.construct_point_on_curve(segments_.back().source(), ci, 0.01 * (b - a).norm())) - a;
+        else if(domain_.distance_sign(segments_.back().source(), segments_.back().target(), ci) == CGAL::NEGATIVE)
+          forward = a - b;
         segment_arc_lengths_.push_back(forward.dot(b - a) >= 0 ? (b - a).norm() : -(b - a).norm());
       }
     }

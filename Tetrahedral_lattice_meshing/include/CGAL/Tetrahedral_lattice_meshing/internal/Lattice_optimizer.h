@@ -74,21 +74,56 @@ double imagined_area(const Boundary& boundary, const FrameField& field)
   return std::accumulate(a.begin(), a.end(), 0.);
 }
 
-/// the number of particles of a lattice of edge `l` in a domain of imagined volume `volume`
-/// and boundary area `area`
-inline double lattice_particle_count(const Lattice& lattice, double volume, double area, double l)
+/// the length of the domain's sharp edges measured in the imagined space
+template <class Boundary, class FrameField, class Point_3>
+double imagined_sharp_edge_length(const Boundary& boundary, const FrameField& field)
 {
-  return volume * lattice.particles_per_cube / (l * l * l) + area * lattice.particles_per_boundary_square / (l * l);
+  double length = 0;
+  for(const auto& s : boundary.segments()) {
+    const Eigen::Vector3d a = to_vector(s[0].x(), s[0].y(), s[0].z()), b = to_vector(s[1].x(), s[1].y(), s[1].z()),
+                          m = 0.5 * (a + b);
+    length += (field.B(Point_3(m[0], m[1], m[2])) * (b - a)).norm();
+  }
+  return length;
+}
+
+/// what the number of particles of a lattice depends on, measured in the imagined space
+struct Domain_measures
+{
+  double volume = 0, area = 0, sharp_edge_length = 0;
+  std::size_t number_of_corners = 0;
+};
+
+template <class Boundary, class FrameField, class Point_3>
+Domain_measures domain_measures(const Boundary& boundary, const FrameField& field)
+{
+  Domain_measures m;
+  m.volume = imagined_volume<Boundary, FrameField, Point_3>(boundary, field);
+  m.area = imagined_area<Boundary, FrameField, Point_3>(boundary, field);
+  m.sharp_edge_length = imagined_sharp_edge_length<Boundary, FrameField, Point_3>(boundary, field);
+  m.number_of_corners = boundary.corners().size();
+  return m;
+}
+
+/// the number of particles of a lattice of edge `l` in a domain: the volume's, plus the
+/// boundary's closing layer, plus the closing rows of the sharp edges and the corners (a
+/// lattice filling a box of n^3 cells: BCC (n+1)^3 + n^3, FCC 4n^3 + 6n^2 + 3n + 1, cubic (n+1)^3)
+inline double lattice_particle_count(const Lattice& lattice, const Domain_measures& m, double l)
+{
+  return m.volume * lattice.particles_per_cube / (l * l * l) + m.area * lattice.particles_per_boundary_square / (l * l) +
+         m.sharp_edge_length / (4 * l) + double(m.number_of_corners) / 8;
 }
 
 /// the edge length whose lattice has `n` particles (the inverse of `lattice_particle_count()`)
-inline double lattice_edge_length(const Lattice& lattice, double volume, double area, double n)
+inline double lattice_edge_length(const Lattice& lattice, const Domain_measures& m, double n)
 {
-  // n = a x^3 + b x^2 in x = 1/l, increasing: Newton from the volume-only root, which is above it
-  const double a = volume * lattice.particles_per_cube, b = area * lattice.particles_per_boundary_square;
+  // n = a x^3 + b x^2 + c x + d in x = 1/l, increasing: Newton from the volume-only root, above it
+  const double a = m.volume * lattice.particles_per_cube, b = m.area * lattice.particles_per_boundary_square,
+               c = m.sharp_edge_length / 4, d = double(m.number_of_corners) / 8;
+  if(!(n > d)) return std::numeric_limits<double>::infinity();
   double x = std::cbrt(n / a);
-  for(int i = 0; i < 50; ++i) {
-    const double f = a * x * x * x + b * x * x - n, df = 3 * a * x * x + 2 * b * x;
+  for(int i = 0; i < 100; ++i) {
+    const double f = ((a * x + b) * x + c) * x + d - n, df = (3 * a * x + 2 * b) * x + c;
     const double step = f / df;
     x -= step;
     if(std::abs(step) < 1e-14 * x) break;
@@ -170,8 +205,9 @@ private:
     std::partial_sum(w.begin(), w.end(), w.begin());
     const double volume = w.empty() ? 0. : w.back();
     const double l = s.edge_length();
-    const double area = imagined_area<Boundary, FrameField, Point_3>(boundary_, field_);
-    const std::size_t n = std::size_t(std::llround(lattice_particle_count(lattice_, volume, area, l)));
+    // the volume's share only: insertion fills the boundary layer (a denser start settles in
+    // more defects)
+    const std::size_t n = std::size_t(std::llround(volume * lattice_.particles_per_cube / (l * l * l)));
     for(std::size_t k = 0; k < boundary_.corners().size(); ++k)
       s.add(boundary_.corners()[k], Particle_kind::CORNER, boundary_.corner_numbers()[k]);
     CGAL::Random random(o_.seed);
