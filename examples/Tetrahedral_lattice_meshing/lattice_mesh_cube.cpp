@@ -1,12 +1,11 @@
 // Copyright (c) 2026 VVM contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// Lattice meshes of cubes (dissertation Tables 4.2 and 4.4): [-1,1]^3 with
+// Lattice meshes of the cube [-1,1]^3 (dissertation Table 4.2) with
 // T = I as a BCC and an FCC lattice whose edge length fits the cube (16 and 13
-// cells across: every particle on a lattice site), then [0.1,1.1]^3 with the
-// anisotropic field of Fig. 4.8, its quality measured in the field's metric.
+// cells across: the lattice can close on the faces with every particle on a site).
 //
-// usage: lattice_mesh_cube [OUTPUT_DIR]   (writes cube_bcc.mesh, cube_fcc.mesh, cube_fig4.8.mesh)
+// usage: lattice_mesh_cube [OUTPUT_DIR]   (writes cube_bcc.mesh and cube_fcc.mesh)
 
 #include <CGAL/make_mesh_3.h> // first: it brings the TBB headers CGAL's other Mesh_3 headers need
 
@@ -82,16 +81,5 @@ int main(int argc, char** argv)
       TLM::parameters::lattice(TLM::Lattice_type::FCC, TLM::parameters::edge_length(2. / 13, TLM::parameters::mesh_report(&r))));
   report("cube_fcc", fcc, identity, TLM::Lattice_type::FCC, r, isotropic, dir);
 
-  // Fig. 4.8: lattice cells squeezed along x towards x = 0.6, on [0.1,1.1]^3
-  Surface_mesh sm2 = cube(0.1, 1.1);
-  Domain domain2(sm2);
-  domain2.detect_features(60);
-  const auto squeeze = FF::single_direction_anisotropy_frame_field<K>();
-  C3T3 aniso = CGAL::make_lattice_mesh_3<C3T3>(
-      domain2, squeeze,
-      TLM::parameters::lattice(TLM::Lattice_type::FCC,
-                               TLM::parameters::number_of_particles(2500, TLM::parameters::mesh_report(&r))));
-  const auto metric = [&squeeze](const auto& p) { return squeeze.B(K::Point_3(p.x(), p.y(), p.z())); };
-  report("cube_fig4.8", aniso, squeeze, TLM::Lattice_type::FCC, r, metric, dir);
   return 0;
 }
