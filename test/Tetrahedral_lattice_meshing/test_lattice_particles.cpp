@@ -561,6 +561,38 @@ void test_particle_kinds_on_sphere()
   CHECK_LESS(deepest, tolerance);
   CHECK_LESS(highest, 1e-6);
   CHECK_LESS(largest_free, 1 - 0.3 * p.edge_length + tolerance);
+
+  // its complex: every vertex of the boundary is a particle on the sphere (free particles left
+  // on the boundary are put onto it), every cell has a neighbour in the complex (no cell hangs
+  // by an edge or a vertex)
+  typedef CGAL::Mesh_triangulation_3<Implicit_domain, CGAL::Default, CGAL::Sequential_tag>::type Sphere_tr;
+  typedef CGAL::Mesh_complex_3_in_triangulation_3<Sphere_tr> Sphere_c3t3;
+  TLM::Lattice_mesh_report r;
+  const Sphere_c3t3 c3t3 = CGAL::make_lattice_mesh_3<Sphere_c3t3>(domain, Constant_field(),
+      TLM::parameters::number_of_particles(wanted, TLM::parameters::mesh_optimization(
+          TLM::Lattice_mesh_optimization::NONE, TLM::parameters::mesh_report(&r, CGAL::parameters::random_seed(4u)))));
+  double lowest_surface_vertex = 2, highest_surface_vertex = 0;
+  for(auto f = c3t3.facets_in_complex_begin(); f != c3t3.facets_in_complex_end(); ++f)
+    for(int k = 1; k <= 3; ++k) {
+      const auto& q = f->first->vertex((f->second + k) & 3)->point().point();
+      const double radius = std::sqrt(CGAL::squared_distance(q, Point(CGAL::ORIGIN)));
+      lowest_surface_vertex = std::min(lowest_surface_vertex, radius);
+      highest_surface_vertex = std::max(highest_surface_vertex, radius);
+    }
+  std::size_t hanging = 0;
+  for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c) {
+    int outside = 0;
+    for(int k = 0; k < 4; ++k) outside += !c3t3.is_in_complex(c->neighbor(k));
+    hanging += outside == 4;
+  }
+  std::cout << "sphere complex: " << c3t3.number_of_cells_in_complex() << " cells, " << c3t3.number_of_facets_in_complex()
+            << " surface facets, vertices at radii [" << lowest_surface_vertex << ", " << highest_surface_vertex
+            << "], " << r.number_of_projected_particles << " free particles put onto the surface, " << hanging
+            << " hanging cells\n";
+  VVM_CHECK(c3t3.number_of_facets_in_complex() > 0);
+  CHECK_LESS(1 - lowest_surface_vertex, tolerance);
+  CHECK_LESS(highest_surface_vertex - 1, 1e-6);
+  VVM_CHECK_EQUAL(hanging, std::size_t(0));
 }
 
 // ---------------------------------------------------------------------------------------------

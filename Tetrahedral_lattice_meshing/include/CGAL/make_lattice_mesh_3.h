@@ -49,6 +49,7 @@ struct Lattice_mesh_report
   double gsm_time = 0;                ///< seconds: the last stage (`Lattice_mesh_optimization`)
   std::size_t number_of_feature_edges = 0;
   std::size_t number_of_surface_facets = 0;
+  std::size_t number_of_projected_particles = 0; ///< free particles the complex left on its boundary, put onto the surface
   bool metric_is_anisotropic = false; ///< the last stage ran in the metric \f$ B^T B \f$ (the frames are not all rotations)
 };
 
@@ -122,7 +123,20 @@ C3T3 make_lattice_mesh(const MeshDomain& domain, const FrameField& field, const 
   CGAL::Real_timer timer;
   timer.start();
   C3T3 c3t3;
-  const Complex_report cr = connect_particles(c3t3, domain, *pd.boundary, pd.particles);
+  Complex_report cr = connect_particles(c3t3, domain, *pd.boundary, pd.particles);
+  // free particles the complex leaves on its boundary (under a hole of the boundary layer,
+  // 0.3 to 0.5 l* deep) would make tents off the surface: onto the surface with them
+  for(int pass = 0; pass < 3 && !cr.exposed_free_particles.empty(); ++pass) {
+    for(std::size_t i : cr.exposed_free_particles) {
+      auto& p = pd.particles.points[i];
+      const auto c = pd.boundary->closest_on_surface(Eigen::Vector3d(p.x(), p.y(), p.z()));
+      p = std::decay_t<decltype(p)>(c.point[0], c.point[1], c.point[2]);
+      pd.particles.kinds[i] = Particle_kind::BOUNDARY;
+      pd.particles.features[i] = c.feature;
+    }
+    r.number_of_projected_particles += cr.exposed_free_particles.size();
+    cr = connect_particles(c3t3, domain, *pd.boundary, pd.particles);
+  }
   r.number_of_feature_edges = cr.number_of_feature_edges;
   r.number_of_surface_facets = cr.number_of_surface_facets;
   r.connection_time = timer.time();

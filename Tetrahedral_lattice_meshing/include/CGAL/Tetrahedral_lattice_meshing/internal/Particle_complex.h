@@ -43,6 +43,8 @@ struct Complex_report
   std::size_t number_of_surface_facets = 0;
   std::size_t number_of_cells = 0;
   std::size_t number_of_peeled_cells = 0;       ///< flat boundary cells left outside
+  std::size_t number_of_isolated_cells = 0;     ///< cells without a neighbour in the complex, left outside
+  std::vector<std::size_t> exposed_free_particles; ///< free particles on a surface facet
 };
 
 /// true if the tetrahedron's smallest height is under a tenth of its longest edge
@@ -158,6 +160,19 @@ Complex_report connect_particles(C3T3& c3t3, const MeshDomain& domain, const Bou
     report.number_of_cells -= peel.size();
     if(peel.empty()) break;
   }
+  // a cell whose four neighbours are all outside hangs on the mesh by an edge or a vertex
+  // (a non-manifold boundary): outside too
+  {
+    std::vector<Cell_handle> isolated;
+    for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c) {
+      int outside = 0;
+      for(int k = 0; k < 4; ++k) outside += label(c->neighbor(k)) != c3t3.subdomain_index(c);
+      if(outside == 4) isolated.push_back(c);
+    }
+    for(const Cell_handle& c : isolated) c3t3.remove_from_complex(c);
+    report.number_of_isolated_cells = isolated.size();
+    report.number_of_cells -= isolated.size();
+  }
   // surface facets: between cells of different subdomains (outside included)
   for(auto f : tr.finite_facets()) {
     const Cell_handle c = f.first, d = c->neighbor(f.second);
@@ -212,6 +227,12 @@ Complex_report connect_particles(C3T3& c3t3, const MeshDomain& domain, const Bou
       c3t3.set_index(v, domain.index_from_surface_patch_index(spi));
     }
   }
+  for(const Vertex_handle& v : on_surface) {
+    auto it = particle_of.find(v);
+    if(it != particle_of.end() && particles.kinds[it->second] == Particle_kind::FREE)
+      report.exposed_free_particles.push_back(it->second);
+  }
+  std::sort(report.exposed_free_particles.begin(), report.exposed_free_particles.end());
   for(Vertex_handle v : tr.finite_vertex_handles()) {
     if(on_surface.count(v)) continue;
     c3t3.set_dimension(v, 3);
