@@ -47,7 +47,15 @@ public:
   }
 
   /// \throws std::invalid_argument if the frame at `p` is degenerate
-  Matrix B(const Point_3& p) const { return frame_inverse(T_(p), at(p)); }
+  Matrix B(const Point_3& p) const
+  {
+    const Matrix t = T_(p);
+    if(!is_degenerate_frame(t)) {
+      const Matrix b = t.inverse();
+      if(b.allFinite()) return b;
+    }
+    return frame_inverse(t, at(p)); // throws; the message (the point printed) only then
+  }
 
   const Function& function() const { return T_; }
 
