@@ -54,15 +54,6 @@ const char* usage =
     "                      measured in the metric\n"
     "  --verbose           progress of the optimizers that report it (gsm)\n";
 
-template <class T>
-T parse_number(const std::string& option, const std::string& text)
-{
-  std::istringstream is(text);
-  T value;
-  if(!(is >> value) || !is.eof())
-    throw Input_error("option " + option + " expects a number, got '" + text + "'");
-  return value;
-}
 
 Options parse_command_line(int argc, char** argv)
 {

@@ -7,6 +7,8 @@
 #ifndef VVM_BENCHMARK_COMPARE_OPTIMIZERS_H
 #define VVM_BENCHMARK_COMPARE_OPTIMIZERS_H
 
+#include "command_line.h"
+
 #include <cstddef>
 #include <stdexcept>
 #include <string>
@@ -29,11 +31,6 @@ struct Options
   std::string field;                   // --field: adaptive-sphere, anisotropic-sphere, anisotropic-cube
 };
 
-// A user error (bad command line, unreadable or invalid input): printed and exit code 2.
-struct Input_error : std::runtime_error
-{
-  using std::runtime_error::runtime_error;
-};
 
 // The chains run by default, in order.
 std::vector<std::string> default_chains();

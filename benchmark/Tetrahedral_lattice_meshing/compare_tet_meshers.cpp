@@ -54,14 +54,7 @@ const char* usage =
     "  --seed N            seed of the particles and of make_mesh_3 (default 0)\n"
     "  --verbose           progress of the particle rounds\n";
 
-template <class T>
-T parse_number(const std::string& option, const std::string& text)
-{
-  std::istringstream is(text);
-  T value;
-  if(!(is >> value) || !is.eof()) throw Input_error("option " + option + " expects a number, got '" + text + "'");
-  return value;
-}
+using vvm_benchmark::parse_number;
 
 Options parse_command_line(int argc, char** argv)
 {

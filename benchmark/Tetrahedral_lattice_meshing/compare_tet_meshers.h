@@ -8,6 +8,8 @@
 #ifndef VVM_BENCHMARK_COMPARE_TET_MESHERS_H
 #define VVM_BENCHMARK_COMPARE_TET_MESHERS_H
 
+#include "command_line.h" // from benchmark/GSM_mesh_optimization
+
 #include <cstddef>
 #include <stdexcept>
 #include <string>
@@ -30,10 +32,7 @@ struct Options
 };
 
 // a user error (bad command line or input): printed with the usage, exit code 2
-struct Input_error : std::runtime_error
-{
-  using std::runtime_error::runtime_error;
-};
+using vvm_benchmark::Input_error;
 
 std::vector<std::string> default_methods();
 bool is_implicit_domain_name(const std::string& name);
