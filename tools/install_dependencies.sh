@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Installs what VVM needs to build, test and benchmark on Debian 12 (bookworm).
 set -euo pipefail
-packages=(g++ make cmake libcgal-dev libeigen3-dev libtbb-dev libboost-dev liblbfgspp-dev python3-meshio)
+# gmsh: the hex-dominant I/O test checks and re-saves its .msh with it.
+packages=(g++ make cmake libcgal-dev libeigen3-dev libtbb-dev libboost-dev liblbfgspp-dev python3-meshio gmsh)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "ok installed" || missing+=("$p")

@@ -97,6 +97,28 @@ void optimize_lattice_mesh(C3T3& c3t3, const MeshDomain& domain, const FrameFiel
   r.gsm_time = timer.time();
 }
 
+/// the particles connected into `c3t3` (`connect_particles()`); free particles the complex
+/// leaves on its boundary (under a hole of the boundary layer, 0.3 to 0.5 l* deep) would make
+/// tents off the surface: they go onto the surface and the particles are connected again
+template <class C3T3, class MeshDomain>
+Complex_report connect_lattice_particles(C3T3& c3t3, const MeshDomain& domain, Particles_in_domain<MeshDomain>& pd,
+                                         std::size_t& number_of_projected_particles)
+{
+  Complex_report cr = connect_particles(c3t3, domain, *pd.boundary, pd.particles);
+  for(int pass = 0; pass < 3 && !cr.exposed_free_particles.empty(); ++pass) {
+    for(std::size_t i : cr.exposed_free_particles) {
+      auto& p = pd.particles.points[i];
+      const auto c = pd.boundary->closest_on_surface(Eigen::Vector3d(p.x(), p.y(), p.z()));
+      p = std::decay_t<decltype(p)>(c.point[0], c.point[1], c.point[2]);
+      pd.particles.kinds[i] = Particle_kind::BOUNDARY;
+      pd.particles.features[i] = c.feature;
+    }
+    number_of_projected_particles += cr.exposed_free_particles.size();
+    cr = connect_particles(c3t3, domain, *pd.boundary, pd.particles);
+  }
+  return cr;
+}
+
 template <class C3T3, class MeshDomain, class FrameField, class NamedParameters>
 C3T3 make_lattice_mesh(const MeshDomain& domain, const FrameField& field, const Lattice_request& request,
                        const NamedParameters& np)
@@ -123,20 +145,7 @@ C3T3 make_lattice_mesh(const MeshDomain& domain, const FrameField& field, const 
   CGAL::Real_timer timer;
   timer.start();
   C3T3 c3t3;
-  Complex_report cr = connect_particles(c3t3, domain, *pd.boundary, pd.particles);
-  // free particles the complex leaves on its boundary (under a hole of the boundary layer,
-  // 0.3 to 0.5 l* deep) would make tents off the surface: onto the surface with them
-  for(int pass = 0; pass < 3 && !cr.exposed_free_particles.empty(); ++pass) {
-    for(std::size_t i : cr.exposed_free_particles) {
-      auto& p = pd.particles.points[i];
-      const auto c = pd.boundary->closest_on_surface(Eigen::Vector3d(p.x(), p.y(), p.z()));
-      p = std::decay_t<decltype(p)>(c.point[0], c.point[1], c.point[2]);
-      pd.particles.kinds[i] = Particle_kind::BOUNDARY;
-      pd.particles.features[i] = c.feature;
-    }
-    r.number_of_projected_particles += cr.exposed_free_particles.size();
-    cr = connect_particles(c3t3, domain, *pd.boundary, pd.particles);
-  }
+  const Complex_report cr = connect_lattice_particles(c3t3, domain, pd, r.number_of_projected_particles);
   r.number_of_feature_edges = cr.number_of_feature_edges;
   r.number_of_surface_facets = cr.number_of_surface_facets;
   r.connection_time = timer.time();

@@ -1,0 +1,184 @@
+// Copyright (c) 2026 VVM contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// CGAL::make_hex_dominant_mesh_3(): cubic-lattice particles aligned with a
+// frame field, their tets, merged into hexahedra, prisms and pyramids
+// (dissertation 4.4).
+
+#ifndef CGAL_MAKE_HEX_DOMINANT_MESH_3_H
+#define CGAL_MAKE_HEX_DOMINANT_MESH_3_H
+
+#include <CGAL/Hex_dominant_mesh_3.h>
+#include <CGAL/Hex_dominant_meshing/parameters.h>
+#include <CGAL/tets_to_hex_dominant.h>
+#include <CGAL/make_lattice_mesh_3.h>
+
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/Real_timer.h>
+
+#include <functional>
+#include <stdexcept>
+#include <string>
+#include <type_traits>
+
+namespace CGAL {
+namespace Hex_dominant_meshing {
+
+/// \ingroup PkgHexDominantMeshingRef
+/// the stages of `make_hex_dominant_mesh_3()`, as its stage visitor sees them
+enum class Hex_dominant_stage
+{
+  PARTICLES,   ///< the cubic-lattice particles are placed
+  TETRAHEDRA,  ///< the particles are connected into tets
+  MERGING      ///< the tets are merged
+};
+
+/// \ingroup PkgHexDominantMeshingRef
+/// what `make_hex_dominant_mesh_3()` did, for its `hex_dominant_report` output
+struct Hex_dominant_report
+{
+  std::size_t number_of_particles = 0;
+  double edge_length = 0;            ///< \f$ l^* \f$
+  std::size_t number_of_projected_particles = 0; ///< free particles the tets left on the boundary, put onto it
+  double particle_time = 0;          ///< seconds
+  double tetrahedra_time = 0;        ///< seconds
+  double merge_time = 0;             ///< seconds
+  Hex_dominant_merge_report merge;   ///< what the merging did
+};
+
+namespace internal {
+
+template <class C3T3, class MeshDomain, class FrameField, class NamedParameters>
+Hex_dominant_mesh_3<typename MeshDomain::R::Point_3>
+make_hex_dominant_mesh(const MeshDomain& domain, const FrameField& field,
+                       Tetrahedral_lattice_meshing::internal::Lattice_request request, const NamedParameters& np)
+{
+  namespace TLM_internal = Tetrahedral_lattice_meshing::internal;
+  namespace HDM = Hex_dominant_meshing;
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  HDM::Hex_dominant_report* report = choose_parameter(get_parameter(np, HDM::internal_np::hex_dominant_report),
+                                                      static_cast<HDM::Hex_dominant_report*>(nullptr));
+  std::function<void(HDM::Hex_dominant_stage, double)> stage_visitor;
+  auto v = get_parameter(np, HDM::internal_np::stage_visitor);
+  if constexpr(!std::is_same<decltype(v), CGAL::internal_np::Param_not_found>::value)
+    stage_visitor = [v](HDM::Hex_dominant_stage s, double t) { v(s, t); };
+  HDM::Hex_dominant_report local;
+  HDM::Hex_dominant_report& r = report ? *report : local;
+  r = HDM::Hex_dominant_report();
+
+  auto pd = TLM_internal::lattice_particles(domain, field, request);
+  r.number_of_particles = pd.particles.size();
+  r.edge_length = pd.particles.edge_length;
+  r.particle_time = pd.particles.time;
+  if(stage_visitor) stage_visitor(HDM::Hex_dominant_stage::PARTICLES, r.particle_time);
+
+  CGAL::Real_timer timer;
+  timer.start();
+  C3T3 c3t3;
+  TLM_internal::connect_lattice_particles(c3t3, domain, pd, r.number_of_projected_particles);
+  if(c3t3.number_of_cells_in_complex() == 0)
+    throw std::invalid_argument("make_hex_dominant_mesh_3: the particles make no cell inside the domain "
+                                "(edge length too large for it?)");
+  r.tetrahedra_time = timer.time();
+  if(stage_visitor) stage_visitor(HDM::Hex_dominant_stage::TETRAHEDRA, r.tetrahedra_time);
+
+  timer.reset();
+  auto mesh = tets_to_hex_dominant(c3t3, HDM::parameters::frame_field(std::cref(field),
+                                                HDM::parameters::merge_report(&r.merge, np)));
+  r.merge_time = timer.time();
+  if(stage_visitor) stage_visitor(HDM::Hex_dominant_stage::MERGING, r.merge_time);
+  C3T3* tets = choose_parameter(get_parameter(np, HDM::internal_np::tetrahedral_mesh), static_cast<C3T3*>(nullptr));
+  if(tets) *tets = std::move(c3t3);
+  return mesh;
+}
+
+template <class NamedParameters>
+Tetrahedral_lattice_meshing::internal::Lattice_request read_hex_dominant_request(const NamedParameters& np)
+{
+  namespace TLM = Tetrahedral_lattice_meshing;
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  if(choose_parameter(get_parameter(np, TLM::internal_np::lattice), TLM::Lattice_type::CUBIC) != TLM::Lattice_type::CUBIC)
+    throw std::invalid_argument("make_hex_dominant_mesh_3: hexahedra come from the cubic lattice (no BCC or FCC)");
+  const double q_bound = choose_parameter(get_parameter(np, internal_np::quality_bound), 0.5);
+  if(!(q_bound >= 0 && q_bound <= 1)) throw std::invalid_argument("make_hex_dominant_mesh_3: the quality bound must be in [0, 1]");
+  return TLM::internal::read_lattice_request(TLM::parameters::lattice(TLM::Lattice_type::CUBIC, np));
+}
+
+} // namespace internal
+} // namespace Hex_dominant_meshing
+
+/*!
+ * \ingroup PkgHexDominantMeshingRef
+ *
+ * makes a hex-dominant mesh of `domain` aligned with the frame field `field` (dissertation
+ * 4.4): particles placed by `lattice_particles_3()` with the cubic lattice (eq. 4.6, \f$ w = 1 \f$,
+ * \f$ \sigma = 0.3 l^* \f$, \f$ R = 1.5 l^* \f$, the thresholds of Table 4.5; the number of
+ * particles estimated from the domain's volume in the field's space), connected into tets as
+ * `make_lattice_mesh_3()` does (CGAL's Delaunay triangulation, cells labelled by subdomain,
+ * boundary facets, feature edges), then merged by `tets_to_hex_dominant()` with the qualities
+ * measured in the field's space.
+ *
+ * \tparam C3T3 a `Mesh_complex_3_in_triangulation_3` of a `Mesh_triangulation_3` of `MeshDomain`,
+ *   for the tets
+ * \tparam MeshDomain a model of `MeshDomain_3` (or `MeshDomainWithFeatures_3`) with `bbox()`
+ * \tparam FrameField a model of `FrameField_3`
+ *
+ * \cgalNamedParamsBegin
+ *   \cgalParamNBegin{the named parameters of `lattice_particles_3()`}
+ *     \cgalParamDescription{`edge_length` or `number_of_particles`, `random_seed`,
+ *       `number_of_threads`, `maximum_running_time` (the particles' share), the particle rounds'
+ *       `visitor`, ...; the lattice is the cubic one}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{the named parameters of `tets_to_hex_dominant()`}
+ *     \cgalParamDescription{`quality_bound`, `cell_types`}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{Hex_dominant_meshing::parameters::stage_visitor}
+ *     \cgalParamDescription{called after each stage with the stage and its seconds}
+ *     \cgalParamType{a callable `void(Hex_dominant_meshing::Hex_dominant_stage, double)`} \cgalParamDefault{none}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{Hex_dominant_meshing::parameters::tetrahedral_mesh}
+ *     \cgalParamDescription{receives the tets that were merged (e.g. to merge them again with
+ *       another quality bound by `tets_to_hex_dominant()`)}
+ *     \cgalParamType{`C3T3*`} \cgalParamDefault{none}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{Hex_dominant_meshing::parameters::hex_dominant_report}
+ *     \cgalParamDescription{receives the counts and times of each stage}
+ *     \cgalParamType{`Hex_dominant_meshing::Hex_dominant_report*`} \cgalParamDefault{none}
+ *   \cgalParamNEnd
+ * \cgalNamedParamsEnd
+ *
+ * \throw std::invalid_argument before any work on bad input (as `lattice_particles_3()`:
+ *   empty domain, bad sizes or counts, degenerate field; a lattice other than cubic; a quality
+ *   bound outside [0, 1]); and if the particles give no cell inside the domain
+ */
+template <class C3T3, class MeshDomain, class FrameField, class NamedParameters = parameters::Default_named_parameters>
+Hex_dominant_mesh_3<typename MeshDomain::R::Point_3>
+make_hex_dominant_mesh_3(const MeshDomain& domain, const FrameField& field,
+                         const NamedParameters& np = parameters::default_values())
+{
+  namespace HDM_internal = Hex_dominant_meshing::internal;
+  return HDM_internal::make_hex_dominant_mesh<C3T3>(domain, field, HDM_internal::read_hex_dominant_request(np), np);
+}
+
+/*!
+ * \ingroup PkgHexDominantMeshingRef
+ *
+ * the same with the boundary-aligned cross field of `Frame_fields::generate_cross_field_3()`
+ * (unit frames, one axis on the surface normal and along the feature curves), computed on a
+ * `make_mesh_3()` mesh of `domain` whose edges are about \f$ l^* \f$ long.
+ */
+template <class C3T3, class MeshDomain, class T, class Tag, class Base>
+Hex_dominant_mesh_3<typename MeshDomain::R::Point_3>
+make_hex_dominant_mesh_3(const MeshDomain& domain, const Named_function_parameters<T, Tag, Base>& np)
+{
+  namespace HDM_internal = Hex_dominant_meshing::internal;
+  const auto r = HDM_internal::read_hex_dominant_request(np);
+  return HDM_internal::make_hex_dominant_mesh<C3T3>(
+      domain, Tetrahedral_lattice_meshing::internal::default_frame_field(domain, r), r, np);
+}
+
+} // namespace CGAL
+
+#endif // CGAL_MAKE_HEX_DOMINANT_MESH_3_H

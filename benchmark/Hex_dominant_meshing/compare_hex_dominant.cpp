@@ -1,0 +1,389 @@
+// Copyright (c) 2026 VVM contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// compare_hex_dominant INPUT [--particles N] [--features-angle DEG]
+//                      [--field cross|identity|fig4.15a..f|cylinder|cylinder-scaled]
+//                      [--q-bound X | --q-bound-sweep] [--threads N] [--json FILE] [--out-dir DIR]
+//                      [--seed N] [--verbose]
+//
+// make_hex_dominant_mesh_3 (dissertation 4.4, Tables 4.6-4.7): cell counts, hex volume,
+// scaled Jacobians, alignment, boundary distance to the input against make_mesh_3's at
+// the same vertex count, times per stage. The sweep merges the same tets at Q_bound
+// 0, 0.1, ..., 0.9 (the Q_SJ / H_vol curve of Fig. 4.22c).
+
+#include <CGAL/make_mesh_3.h> // first: it brings the TBB headers CGAL's other Mesh_3 headers need
+
+#include "box_surface.h"
+#include "command_line.h"
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Frame_fields/Closed_form_frame_field_3.h>
+#include <CGAL/Frame_fields/dissertation_frame_fields.h>
+#include <CGAL/GSM_mesh_optimization/IO/read_closed_surface.h>
+#include <CGAL/GSM_mesh_optimization/mesh_with_vertex_count.h>
+#include <CGAL/Hex_dominant_meshing/IO/write_MEDIT.h>
+#include <CGAL/Hex_dominant_meshing/IO/write_MSH.h>
+#include <CGAL/Hex_dominant_meshing/IO/write_VTU.h>
+#include <CGAL/Hex_dominant_meshing/hex_dominant_statistics.h>
+#include <CGAL/Mesh_complex_3_in_triangulation_3.h>
+#include <CGAL/Mesh_criteria_3.h>
+#include <CGAL/Mesh_triangulation_3.h>
+#include <CGAL/Polygon_mesh_processing/distance.h>
+#include <CGAL/Polygon_mesh_processing/measure.h>
+#include <CGAL/Polyhedral_mesh_domain_with_features_3.h>
+#include <CGAL/Real_timer.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/Tetrahedral_lattice_meshing/internal/Domain_cross_field.h>
+#include <CGAL/facets_in_complex_3_to_triangle_mesh.h>
+#include <CGAL/make_hex_dominant_mesh_3.h>
+
+#include <tbb/global_control.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <functional>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace {
+
+typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+typedef K::Point_3 Point_3;
+typedef CGAL::Surface_mesh<Point_3> Surface_mesh;
+typedef CGAL::Polyhedral_mesh_domain_with_features_3<K, Surface_mesh> Domain;
+typedef CGAL::Mesh_triangulation_3<Domain, CGAL::Default, CGAL::Sequential_tag>::type Tr;
+typedef CGAL::Mesh_complex_3_in_triangulation_3<Tr, Domain::Corner_index, Domain::Curve_index> C3T3;
+typedef CGAL::Frame_fields::Closed_form_frame_field_3<K> Field;
+typedef CGAL::Hex_dominant_mesh_3<Point_3> Mesh;
+namespace HDM = CGAL::Hex_dominant_meshing;
+namespace TLM = CGAL::Tetrahedral_lattice_meshing;
+namespace FF = CGAL::Frame_fields;
+namespace PMP = CGAL::Polygon_mesh_processing;
+using vvm_benchmark::Input_error;
+using vvm_benchmark::parse_number;
+
+const char* usage =
+    "usage: compare_hex_dominant INPUT [--particles N] [--features-angle DEG]\n"
+    "                            [--field cross|identity|fig4.15a..f|cylinder|cylinder-scaled]\n"
+    "                            [--q-bound X | --q-bound-sweep] [--threads N] [--json FILE] [--out-dir DIR]\n"
+    "                            [--seed N] [--verbose]\n"
+    "  INPUT  a closed triangle surface (OFF, OBJ, PLY, STL, ...), or cube or cylinder:\n"
+    "         cube is [-1,1]^3 ([0.1,1.1]^3 with fig4.15c and fig4.15d); cylinder is a tube about z,\n"
+    "         radii 0.5 and 1, height 1 (256 facets around)\n"
+    "  --particles N       the number of particles sought (default 30000)\n"
+    "  --features-angle D  sharp edges of surfaces (default 0 = none; 60 for cube and cylinder)\n"
+    "  --field F           cross (default for surfaces: generate_cross_field_3 on the domain);\n"
+    "                      identity (default for cube) = fig4.15a; fig4.15b T = diag(4,1,1);\n"
+    "                      fig4.15c T = diag(8x,1,1) (on [0.1,1.1]^3: the field is degenerate at x = 0);\n"
+    "                      fig4.15d Fig. 4.8's T = diag(1.0125 - exp(-|x-0.6|),1,1) on [0.1,1.1]^3;\n"
+    "                      fig4.15e / fig4.15f the shears; cylinder / cylinder-scaled: Fig. 4.16's\n"
+    "                      cross field without / with the scale correction (reference radius 1)\n"
+    "  --q-bound X         Q_bound of the merging (default 0.5)\n"
+    "  --q-bound-sweep     merge the same tets at Q_bound 0, 0.1, ..., 0.9 (Fig. 4.22c)\n"
+    "  --threads N         maximum number of threads (default: all cores)\n"
+    "  --json FILE         one JSON line per merging\n"
+    "  --out-dir DIR       write <model>_hexdom.vtu (cell type, scaled Jacobians), .msh and .mesh\n"
+    "  --seed N            seed of the particles and of make_mesh_3 (default 0)\n"
+    "  --verbose           progress of the particle rounds\n";
+
+struct Options
+{
+  std::string input, field, json_file, out_dir;
+  std::size_t particles = 30000;
+  double features_angle = -1, q_bound = 0.5;
+  bool sweep = false, verbose = false;
+  int threads = 0;
+  unsigned seed = 0;
+};
+
+Options parse_command_line(int argc, char** argv)
+{
+  Options o;
+  for(int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    auto value = [&]() -> std::string {
+      if(i + 1 >= argc) throw Input_error("option " + arg + " expects a value");
+      return argv[++i];
+    };
+    if(arg == "--particles") {
+      const long n = parse_number<long>(arg, value());
+      if(n < 8 || n > 20000000) throw Input_error("--particles must be between 8 and 2e7");
+      o.particles = std::size_t(n);
+    } else if(arg == "--features-angle") {
+      o.features_angle = parse_number<double>(arg, value());
+      if(!(o.features_angle >= 0 && o.features_angle < 180)) throw Input_error("--features-angle must be in [0, 180)");
+    } else if(arg == "--field") o.field = value();
+    else if(arg == "--q-bound") {
+      o.q_bound = parse_number<double>(arg, value());
+      if(!(o.q_bound >= 0 && o.q_bound <= 1)) throw Input_error("--q-bound must be in [0, 1]");
+    } else if(arg == "--q-bound-sweep") o.sweep = true;
+    else if(arg == "--threads") {
+      o.threads = parse_number<int>(arg, value());
+      if(o.threads < 0) throw Input_error("--threads must be non-negative");
+    } else if(arg == "--json") o.json_file = value();
+    else if(arg == "--out-dir") o.out_dir = value();
+    else if(arg == "--seed") o.seed = parse_number<unsigned>(arg, value());
+    else if(arg == "--verbose") o.verbose = true;
+    else if(arg == "--help" || arg == "-h") {
+      std::cout << usage;
+      std::exit(0);
+    } else if(!arg.empty() && arg[0] == '-') throw Input_error("unknown option " + arg);
+    else if(o.input.empty()) o.input = arg;
+    else throw Input_error("more than one INPUT given ('" + o.input + "', '" + arg + "')");
+  }
+  if(o.input.empty()) throw Input_error("no INPUT given");
+  const bool builtin = o.input == "cube" || o.input == "cylinder";
+  if(o.field.empty()) o.field = o.input == "cube" ? "identity" : o.input == "cylinder" ? "cylinder-scaled" : "cross";
+  static const std::vector<std::string> fields = {"cross", "identity", "fig4.15a", "fig4.15b", "fig4.15c", "fig4.15d",
+                                                  "fig4.15e", "fig4.15f", "cylinder", "cylinder-scaled"};
+  if(std::find(fields.begin(), fields.end(), o.field) == fields.end()) throw Input_error("unknown --field '" + o.field + "'");
+  if(o.field.rfind("fig4.15", 0) == 0 && o.input != "cube") throw Input_error("--field " + o.field + " is defined on INPUT cube");
+  if(o.field.rfind("cylinder", 0) == 0 && o.input != "cylinder")
+    throw Input_error("--field " + o.field + " is defined on INPUT cylinder");
+  if(o.features_angle < 0) o.features_angle = builtin ? 60. : 0.;
+  return o;
+}
+
+// a tube about z: radii 0.5 and 1, z in [0, 1], n facets around
+Surface_mesh tube_surface(int n)
+{
+  Surface_mesh sm;
+  std::vector<Surface_mesh::Vertex_index> v; // ring (outer bottom, outer top, inner bottom, inner top) x n
+  for(int ring = 0; ring < 4; ++ring)
+    for(int k = 0; k < n; ++k) {
+      const double a = 2 * CGAL_PI * k / n, r = ring < 2 ? 1. : 0.5, z = ring % 2 ? 1. : 0.;
+      v.push_back(sm.add_vertex(Point_3(r * std::cos(a), r * std::sin(a), z)));
+    }
+  auto V = [&](int ring, int k) { return v[std::size_t(ring * n + (k % n))]; };
+  for(int k = 0; k < n; ++k) {
+    sm.add_face(V(0, k), V(0, k + 1), V(1, k + 1), V(1, k)); // outside, normal out
+    sm.add_face(V(2, k), V(3, k), V(3, k + 1), V(2, k + 1)); // inside, normal towards the axis
+    sm.add_face(V(1, k), V(1, k + 1), V(3, k + 1), V(3, k)); // top
+    sm.add_face(V(0, k), V(2, k), V(2, k + 1), V(0, k + 1)); // bottom
+  }
+  PMP::triangulate_faces(sm);
+  return sm;
+}
+
+Field make_field(const Options& o, const Domain& domain, double volume)
+{
+  const std::string& f = o.field;
+  auto constant = [](const Eigen::Matrix3d& T) { return Field([T](const Point_3&) { return T; }); };
+  if(f == "identity" || f == "fig4.15a") return constant(Eigen::Matrix3d::Identity());
+  if(f == "fig4.15b") return constant(FF::constant_stretch_frame_field<K>().T(Point_3(0, 0, 0)));
+  if(f == "fig4.15c") return FF::linear_scale_frame_field<K>();
+  if(f == "fig4.15d") return FF::single_direction_anisotropy_frame_field<K>();
+  if(f == "fig4.15e") return constant(FF::shear_y_frame_field<K>().T(Point_3(0, 0, 0)));
+  if(f == "fig4.15f") return constant(FF::shear_yz_frame_field<K>().T(Point_3(0, 0, 0)));
+  if(f == "cylinder") return FF::cylinder_frame_field<K>(1., false);
+  if(f == "cylinder-scaled") return FF::cylinder_frame_field<K>(1., true);
+  // cross: on a mesh about as fine as the lattice
+  const double size = std::cbrt(volume / double(o.particles));
+  auto cross = std::make_shared<FF::Discrete_frame_field_3<K>>(TLM::internal::domain_cross_field(domain, size));
+  return Field([cross](const Point_3& p) { return cross->T(p); });
+}
+
+// the boundary of the merged tets (the cells' boundary, each quad as its two tet facets) as a triangle mesh
+Surface_mesh boundary_of(const Mesh& mesh, const HDM::Hex_dominant_merge_report& report)
+{
+  std::map<std::array<std::size_t, 3>, std::pair<int, std::array<std::size_t, 3>>> facets; // sorted -> (count, outward)
+  for(const auto& t : report.tets)
+    for(const auto& f : HDM::internal::cell_faces(CGAL::Hex_dominant_cell_type::TETRAHEDRON).triangles) {
+      const std::array<std::size_t, 3> outward = {{t[std::size_t(f[0])], t[std::size_t(f[1])], t[std::size_t(f[2])]}};
+      std::array<std::size_t, 3> key = outward;
+      std::sort(key.begin(), key.end());
+      auto& e = facets[key];
+      ++e.first;
+      e.second = outward;
+    }
+  Surface_mesh sm;
+  std::map<std::size_t, Surface_mesh::Vertex_index> vertex;
+  auto V = [&](std::size_t i) {
+    auto it = vertex.find(i);
+    if(it != vertex.end()) return it->second;
+    return vertex[i] = sm.add_vertex(mesh.points[i]);
+  };
+  std::size_t dropped = 0;
+  for(const auto& f : facets)
+    if(f.second.first == 1 &&
+       sm.add_face(V(f.second.second[0]), V(f.second.second[1]), V(f.second.second[2])) == Surface_mesh::null_face())
+      ++dropped;
+  if(dropped) std::cerr << "compare_hex_dominant: " << dropped << " boundary facets left out of the distance (not manifold)\n";
+  return sm;
+}
+
+double two_sided_distance(const Surface_mesh& a, const Surface_mesh& b, double spacing)
+{
+  const auto np = PMP::parameters::use_grid_sampling(true).grid_spacing(spacing);
+  return (std::max)(PMP::approximate_Hausdorff_distance<CGAL::Parallel_if_available_tag>(a, b, np),
+                    PMP::approximate_Hausdorff_distance<CGAL::Parallel_if_available_tag>(b, a, np));
+}
+
+int run(const Options& o)
+{
+  const bool is_cube = o.input == "cube", is_cylinder = o.input == "cylinder";
+  Surface_mesh surface;
+  double volume = 0;
+  std::string model;
+  if(is_cube) {
+    const bool shifted = o.field == "fig4.15c" || o.field == "fig4.15d";
+    surface = vvm_benchmark::box_surface<Surface_mesh>(shifted ? 0.1 : -1., shifted ? 1.1 : 1.);
+    model = "cube";
+  } else if(is_cylinder) {
+    surface = tube_surface(256);
+    model = "cylinder";
+  } else {
+    try {
+      CGAL::GSM_mesh_optimization::IO::read_closed_surface(o.input, surface);
+    } catch(const std::invalid_argument& e) {
+      throw Input_error(e.what());
+    }
+    model = CGAL::GSM_mesh_optimization::IO::file_stem(o.input);
+  }
+  volume = std::abs(PMP::volume(surface));
+  Domain domain(surface);
+  if(o.features_angle > 0) domain.detect_features(o.features_angle);
+
+  CGAL::Real_timer timer;
+  timer.start();
+  const Field field = make_field(o, domain, volume);
+  const double field_time = timer.time();
+  auto B = [&field](const Eigen::Vector3d& x) { return Eigen::Matrix3d(field.B(Point_3(x[0], x[1], x[2]))); };
+
+  // the particles and their tets once; the merging once per Q_bound
+  HDM::Hex_dominant_report report;
+  std::vector<double> bounds;
+  if(o.sweep)
+    for(int k = 0; k <= 9; ++k) bounds.push_back(0.1 * k);
+  else
+    bounds.push_back(o.q_bound);
+  const double spacing = std::sqrt(PMP::area(surface) / 2e5);
+  double make_mesh_3_distance = -1;
+  std::size_t make_mesh_3_vertices = 0;
+  std::ofstream json;
+  if(!o.json_file.empty()) {
+    json.open(o.json_file, std::ios::app);
+    if(!json) throw Input_error("cannot write '" + o.json_file + "'");
+  }
+  std::printf("%-10s %-16s %5s %8s %7s %6s %6s %6s %7s %6s %6s %6s %6s %7s %5s %5s %8s %7s %7s %7s %7s\n", "model", "field",
+              "Qb", "particles", "hex", "prism", "pyr", "tet", "H_vol%", "#hex%", "SJmin", "SJmean", "Vmin", "align",
+              "inv", "ncf", "hd/hd0", "t_part", "t_tets", "t_merge", "t_total");
+  C3T3 tets;
+  for(double q : bounds) {
+    namespace TP = TLM::parameters;
+    Mesh mesh;
+    if(q == bounds.front())
+      mesh = CGAL::make_hex_dominant_mesh_3<C3T3>(
+          domain, field,
+          TP::number_of_particles(o.particles, TP::number_of_threads(o.threads,
+              HDM::parameters::quality_bound(q, HDM::parameters::hex_dominant_report(&report,
+                  HDM::parameters::tetrahedral_mesh(&tets, CGAL::parameters::random_seed(o.seed).verbose(o.verbose)))))));
+    else { // the same tets merged again
+      CGAL::Real_timer merge;
+      merge.start();
+      mesh = CGAL::tets_to_hex_dominant(tets, HDM::parameters::quality_bound(q, HDM::parameters::frame_field(std::cref(field),
+                                                  HDM::parameters::merge_report(&report.merge))));
+      report.merge_time = merge.time();
+    }
+    const HDM::Hex_dominant_statistics s = HDM::hex_dominant_statistics(mesh, B, &report.merge);
+    const double distance = two_sided_distance(boundary_of(mesh, report.merge), surface, spacing);
+    if(make_mesh_3_distance < 0) { // make_mesh_3 at the same vertex count, uniform sizing
+      namespace P = CGAL::parameters;
+      auto with_size = [&](double size) {
+        CGAL::get_default_random() = CGAL::Random(o.seed);
+        CGAL::Mesh_criteria_3<Tr> criteria(P::edge_size = size, P::facet_angle = 25, P::facet_size = size,
+                                           P::facet_distance = size / 10., P::cell_radius_edge_ratio = 3, P::cell_size = size);
+        return CGAL::make_mesh_3<C3T3>(domain, criteria, P::no_perturb(), P::no_exude());
+      };
+      const auto r = CGAL::GSM_mesh_optimization::mesh_with_vertex_count(
+          with_size, mesh.points.size(), std::cbrt(volume / (0.2 * double(mesh.points.size()))), 0.03);
+      Surface_mesh b;
+      CGAL::facets_in_complex_3_to_triangle_mesh(r.c3t3, b);
+      make_mesh_3_distance = two_sided_distance(b, surface, spacing);
+      make_mesh_3_vertices = CGAL::GSM_mesh_optimization::number_of_vertices_in_complex(r.c3t3);
+    }
+    const double total = field_time + report.particle_time + report.tetrahedra_time + report.merge_time;
+    const double ratio = make_mesh_3_distance > 1e-9 * std::sqrt(PMP::area(surface)) ? distance / make_mesh_3_distance : -1;
+    std::printf("%-10s %-16s %5.2f %8zu %7zu %6zu %6zu %6zu %7.2f %6.2f %6.3f %6.3f %6.3f %7.2f %5zu %5zu %8.3f %7.2f %7.2f %7.2f %7.2f\n",
+                model.c_str(), o.field.c_str(), q, mesh.points.size(), s.number_of_hexahedra, s.number_of_prisms,
+                s.number_of_pyramids, s.number_of_tetrahedra, s.hexahedron_volume_percent, s.hexahedron_count_percent,
+                s.scaled_jacobian_min, s.scaled_jacobian_mean, s.verdict_scaled_jacobian_min, s.alignment_error_mean,
+                s.number_of_inverted_cells, s.number_of_nonconforming_faces, ratio, field_time + report.particle_time,
+                report.tetrahedra_time, report.merge_time, total);
+    if(json)
+      json << "{\"model\": \"" << model << "\", \"field\": \"" << o.field << "\", \"q_bound\": " << q
+           << ", \"n_particles\": " << mesh.points.size() << ", \"n_hex\": " << s.number_of_hexahedra
+           << ", \"n_prism\": " << s.number_of_prisms << ", \"n_pyramid\": " << s.number_of_pyramids
+           << ", \"n_tet\": " << s.number_of_tetrahedra << ", \"h_vol_percent\": " << s.hexahedron_volume_percent
+           << ", \"hex_count_percent\": " << s.hexahedron_count_percent << ", \"sj_min\": " << s.scaled_jacobian_min
+           << ", \"sj_mean\": " << s.scaled_jacobian_mean << ", \"verdict_sj_min\": " << s.verdict_scaled_jacobian_min
+           << ", \"verdict_sj_mean\": " << s.verdict_scaled_jacobian_mean
+           << ", \"alignment_error_mean_deg\": " << s.alignment_error_mean << ", \"hausdorff\": " << distance
+           << ", \"hausdorff_make_mesh_3\": " << make_mesh_3_distance << ", \"make_mesh_3_vertices\": " << make_mesh_3_vertices
+           << ", \"hausdorff_ratio\": " << ratio << ", \"n_inverted\": " << s.number_of_inverted_cells
+           << ", \"n_nonconforming\": " << s.number_of_nonconforming_faces
+           << ", \"time_field_s\": " << field_time << ", \"time_particles_s\": " << report.particle_time
+           << ", \"time_tets_s\": " << report.tetrahedra_time << ", \"time_merge_s\": " << report.merge_time
+           << ", \"time_s\": " << total << "}\n";
+    if(!o.out_dir.empty() && q == bounds.front()) {
+      std::vector<double> sj, verdict, type;
+      for(const auto& c : mesh.cells) {
+        type.push_back(double(int(c.type)));
+        if(c.type != CGAL::Hex_dominant_cell_type::HEXAHEDRON) {
+          sj.push_back(0);
+          verdict.push_back(0);
+          continue;
+        }
+        std::array<Eigen::Vector3d, 8> p;
+        Eigen::Vector3d g = Eigen::Vector3d::Zero();
+        for(std::size_t k = 0; k < 8; ++k) {
+          const Point_3& x = mesh.points[c.vertices[k]];
+          g += (p[k] = Eigen::Vector3d(x.x(), x.y(), x.z()));
+        }
+        sj.push_back(HDM::hexahedron_scaled_jacobian(p, B(g / 8.)));
+        verdict.push_back(HDM::verdict_hexahedron_scaled_jacobian(p));
+      }
+      const std::string base = o.out_dir + "/" + model + "_hexdom";
+      HDM::IO::write_VTU(base + ".vtu", mesh, {{"scaled_jacobian", sj}, {"verdict_scaled_jacobian", verdict}});
+      HDM::IO::write_MSH(base + ".msh", mesh);
+      HDM::IO::write_MEDIT(base + ".mesh", mesh);
+    }
+  }
+  std::printf("merging (last): candidates %.2f s, selection %.2f s; %zu hexahedron, %zu prism, %zu pyramid candidates\n",
+              report.merge.candidate_time, report.merge.selection_time, report.merge.number_of_hexahedron_candidates,
+              report.merge.number_of_prism_candidates, report.merge.number_of_pyramid_candidates);
+  std::printf("make_mesh_3 at %zu vertices: boundary distance %.5g (hd0)\n", make_mesh_3_vertices, make_mesh_3_distance);
+  return 0;
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+  try {
+    const Options options = parse_command_line(argc, argv);
+    std::unique_ptr<tbb::global_control> threads;
+    if(options.threads > 0)
+      threads = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, std::size_t(options.threads));
+    if(!options.out_dir.empty()) {
+      std::error_code error;
+      std::filesystem::create_directories(options.out_dir, error);
+      if(error) throw Input_error("cannot create '" + options.out_dir + "': " + error.message());
+    }
+    return run(options);
+  } catch(const Input_error& e) {
+    std::cerr << "compare_hex_dominant: error: " << e.what() << "\n" << usage;
+    return 2;
+  } catch(const std::invalid_argument& e) {
+    std::cerr << "compare_hex_dominant: error: " << e.what() << "\n";
+    return 2;
+  } catch(const std::exception& e) {
+    std::cerr << "compare_hex_dominant: failed: " << e.what() << "\n";
+    return 1;
+  }
+}
