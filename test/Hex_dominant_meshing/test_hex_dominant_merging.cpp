@@ -343,6 +343,10 @@ void test_cubic_grid()
   CHECK(std::abs(s.scaled_jacobian_min - 1.) < 1e-12 && std::abs(s.verdict_scaled_jacobian_min - 1.) < 1e-12);
   CHECK(s.alignment_error_mean < 1e-9);
   check_partition(mesh, report, tr, 1e-12);
+  // a left-handed frame field (an axis reversed) measures the same cells
+  const Mesh mirrored = CGAL::tets_to_hex_dominant(tr, HDM::parameters::frame_field(
+      Constant_field(Eigen::Vector3d(-1, 1, 1).asDiagonal()), HDM::parameters::quality_bound(0.9)));
+  CHECK(mirrored.number_of_cells(CGAL::Hex_dominant_cell_type::HEXAHEDRON) == std::size_t((n - 1) * (n - 1) * (n - 1)));
 }
 
 void test_random_tets()

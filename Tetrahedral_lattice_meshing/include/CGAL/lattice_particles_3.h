@@ -138,8 +138,20 @@ Particles_in_domain<MeshDomain> lattice_particles(const MeshDomain& domain, cons
   auto fail = [](const std::string& m) { throw std::invalid_argument("lattice_particles_3: " + m); };
 
   const auto bb = domain.bbox();
-  const Point_3 c(0.5 * (bb.xmin() + bb.xmax()), 0.5 * (bb.ymin() + bb.ymax()), 0.5 * (bb.zmin() + bb.zmax()));
-  const Eigen::Matrix3d Tc = field.T(c), Bc = field.B(c); // throw on a degenerate frame
+  // the frame at the box's centre, or, where it is degenerate (a hole of the domain on the
+  // axis of a cylindrical field), at one of eight points around it; if all are, the error
+  Eigen::Matrix3d Tc, Bc;
+  for(int k = -1; k < 8; ++k) {
+    auto at = [&](double lo, double hi, int bit) { return 0.5 * (lo + hi) + (k < 0 ? 0. : ((k >> bit) & 1 ? 0.25 : -0.25) * (hi - lo)); };
+    const Point_3 c(at(bb.xmin(), bb.xmax(), 0), at(bb.ymin(), bb.ymax(), 1), at(bb.zmin(), bb.zmax(), 2));
+    try {
+      Tc = field.T(c);
+      Bc = field.B(c);
+      break;
+    } catch(const std::invalid_argument&) {
+      if(k == 7) throw;
+    }
+  }
   const double l0 = edge_length_from_box(domain, Bc.determinant(), r);
   Eigen::JacobiSVD<Eigen::Matrix3d> svd(Tc);
   const double spacing = l0 * svd.singularValues().minCoeff();

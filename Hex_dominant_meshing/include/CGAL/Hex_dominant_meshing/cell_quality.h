@@ -218,8 +218,8 @@ inline double pyramid_merging_quality(const std::array<Eigen::Vector3d, 5>& x,
 /*!
  * \ingroup PkgHexDominantMeshingRef
  * returns the smallest corner Jacobian determinant \f$ \det[e_1, e_2, e_3] \f$ of a cell of
- * `mesh` (tetrahedron: its orientation), Euclidean: a cell is inverted if it is \f$ \le 0 \f$
- * (for a pyramid the apex, where four edges meet, is measured as the two tetrahedra of its base diagonals).
+ * `mesh` (tetrahedron: its orientation; pyramid: its four base corners), Euclidean: a cell is
+ * inverted if it is \f$ \le 0 \f$.
  */
 template <class Point_3>
 double minimum_corner_jacobian(const Hex_dominant_mesh_3<Point_3>& mesh, const typename Hex_dominant_mesh_3<Point_3>::Cell& cell)
@@ -249,7 +249,7 @@ double minimum_corner_jacobian(const Hex_dominant_mesh_3<Point_3>& mesh, const t
         const auto& n = pyramid_corner_neighbors()[std::size_t(c)];
         m = (std::min)(m, det(c, n[0], n[1], n[2]));
       }
-      return (std::min)(m, (std::min)(det(0, 1, 3, 4), det(2, 3, 1, 4)));
+      return m;
   }
 }
 

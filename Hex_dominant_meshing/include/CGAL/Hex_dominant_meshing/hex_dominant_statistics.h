@@ -170,7 +170,10 @@ Hex_dominant_statistics hex_dominant_statistics(const Hex_dominant_mesh_3<Point_
     const Point_3& q = mesh.points[i];
     return Eigen::Vector3d(CGAL::to_double(q.x()), CGAL::to_double(q.y()), CGAL::to_double(q.z()));
   };
-  auto frame = [&](const Eigen::Vector3d& x) { return B ? B(x) : Eigen::Matrix3d(Eigen::Matrix3d::Identity()); };
+  auto frame = [&](const Eigen::Vector3d& x) {
+    Eigen::Matrix3d b = B ? B(x) : Eigen::Matrix3d(Eigen::Matrix3d::Identity());
+    return Eigen::Matrix3d(b.determinant() < 0 ? -b : b); // left-handed frames measure the same cells
+  };
   double hex_volume = 0, sj_sum = 0, verdict_sum = 0, align_sum = 0;
   s.scaled_jacobian_min = s.verdict_scaled_jacobian_min = std::numeric_limits<double>::infinity();
   std::set<std::pair<std::size_t, std::size_t>> hex_edges;

@@ -206,7 +206,8 @@ inline double merging_quality(const Tetrahedral_adjacency& mesh, const Merge_can
   const std::size_t n = m.number_of_vertices();
   Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
   for(std::size_t k = 0; k < n; ++k) centroid += mesh.points[m.vertices[k]];
-  const Eigen::Matrix3d b = B ? B(centroid / double(n)) : Eigen::Matrix3d::Identity();
+  Eigen::Matrix3d b = B ? B(centroid / double(n)) : Eigen::Matrix3d::Identity();
+  if(b.determinant() < 0) b = -b; // a left-handed frame measures the same cell
   if(m.type == Hex_dominant_cell_type::HEXAHEDRON) {
     std::array<Eigen::Vector3d, 8> p;
     for(std::size_t k = 0; k < 8; ++k) p[k] = mesh.points[m.vertices[k]];
@@ -262,6 +263,7 @@ public:
         Eigen::Vector3d c = Eigen::Vector3d::Zero();
         for(std::size_t v : mesh.tets[t]) c += mesh.points[v];
         tet_B_[t] = B(0.25 * c);
+        if(tet_B_[t].determinant() < 0) tet_B_[t] = -tet_B_[t]; // left-handed frames measure the same cells
       }
     });
   }
