@@ -61,6 +61,19 @@ int failures = 0;
     }                                                                             \
   } while(0)
 
+// true if `f` throws std::invalid_argument (its message printed)
+template <class F>
+bool throws(F f)
+{
+  try {
+    f();
+  } catch(const std::invalid_argument& e) {
+    std::cout << "  refused: " << e.what() << "\n";
+    return true;
+  }
+  return false;
+}
+
 // the 48 symmetries of the cube, as permutations of the corner numbers x + 2y + 4z
 std::vector<std::array<int, 8>> cube_symmetries()
 {
@@ -439,15 +452,6 @@ void test_make_hex_dominant_mesh_on_cube()
   CHECK(std::abs(s.total_volume - 8.) < 0.08); // the particles' hull on the cube's surface
   for(const auto& c : mesh.cells) CHECK(c.subdomain_index == 1);
 
-  auto throws = [&](auto f) {
-    try {
-      f();
-    } catch(const std::invalid_argument& e) {
-      std::cout << "  refused: " << e.what() << "\n";
-      return true;
-    }
-    return false;
-  };
   CHECK(throws([&] { CGAL::make_hex_dominant_mesh_3<Cube_c3t3>(domain, Constant_field(), TLM::parameters::lattice(TLM::Lattice_type::BCC)); }));
   CHECK(throws([&] { CGAL::make_hex_dominant_mesh_3<Cube_c3t3>(domain, Constant_field(), TLM::parameters::edge_length(-1.)); }));
   CHECK(throws([&] { CGAL::make_hex_dominant_mesh_3<Cube_c3t3>(domain, Constant_field(), TLM::parameters::edge_length(1e-5)); }));
@@ -458,15 +462,6 @@ void test_bad_input()
 {
   std::vector<Point_3> p = {Point_3(0, 0, 0), Point_3(1, 0, 0), Point_3(0, 1, 0), Point_3(0, 0, 1)};
   Delaunay tr(p.begin(), p.end());
-  auto throws = [&](auto f) {
-    try {
-      f();
-    } catch(const std::invalid_argument& e) {
-      std::cout << "  refused: " << e.what() << "\n";
-      return true;
-    }
-    return false;
-  };
   CHECK(throws([&] { CGAL::tets_to_hex_dominant(tr, HDM::parameters::quality_bound(1.5)); }));
   CHECK(throws([&] { CGAL::tets_to_hex_dominant(tr, HDM::parameters::quality_bound(std::nan(""))); }));
   CHECK(throws([&] { CGAL::tets_to_hex_dominant(tr, CGAL::Tetrahedral_lattice_meshing::parameters::number_of_threads(-1)); }));
