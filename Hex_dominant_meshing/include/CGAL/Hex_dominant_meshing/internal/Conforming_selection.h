@@ -93,7 +93,7 @@ public:
       }
   }
 
-  /// keeps candidates of `candidates` (their indices into it are offset by `first_index`)
+  /// keeps, by descending quality, the candidates that share no tet with a kept cell and conform to them
   void select(const std::vector<Merge_candidate>& candidates)
   {
     std::vector<std::size_t> order(candidates.size());

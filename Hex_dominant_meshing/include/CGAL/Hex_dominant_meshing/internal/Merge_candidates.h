@@ -506,7 +506,7 @@ private:
   Frame_inverse B_;
   std::vector<Eigen::Matrix3d> tet_B_;
   double bound_;
-  mutable const std::vector<std::size_t>* owner_ = nullptr; // set for the duration of find()
+  mutable const std::vector<std::size_t>* owner_ = nullptr; // set for the duration of find(): one find() at a time
 };
 
 } // namespace internal
