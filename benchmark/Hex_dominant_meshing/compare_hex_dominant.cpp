@@ -30,6 +30,7 @@
 #include <CGAL/Mesh_triangulation_3.h>
 #include <CGAL/Polygon_mesh_processing/distance.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
+#include <CGAL/Polygon_mesh_processing/orientation.h>
 #include <CGAL/Polyhedral_mesh_domain_with_features_3.h>
 #include <CGAL/Real_timer.h>
 #include <CGAL/Surface_mesh.h>
@@ -47,6 +48,7 @@
 #include <iostream>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -72,8 +74,10 @@ const char* usage =
     "                            [--field cross|identity|fig4.15a..f|cylinder|cylinder-scaled]\n"
     "                            [--q-bound X | --q-bound-sweep] [--threads N] [--json FILE] [--out-dir DIR]\n"
     "                            [--seed N] [--verbose]\n"
-    "  INPUT  a closed triangle surface (OFF, OBJ, PLY, STL, ...), or cube or cylinder:\n"
-    "         cube is [-1,1]^3 ([0.1,1.1]^3 with fig4.15c and fig4.15d); cylinder is a tube about z,\n"
+    "  INPUT  a closed triangle surface (OFF, OBJ, PLY, STL, ...), or cube, warped-cube or cylinder:\n"
+    "         cube is [-1,1]^3 ([0.1,1.1]^3 with fig4.15c and fig4.15d); warped-cube is T [-1,1]^3\n"
+    "         for a constant field T (fig4.15b, e, f; scaled to volume 8), the warped cube of\n"
+    "         Fig. 4.15 whose faces are lattice planes; cylinder is a tube about z,\n"
     "         radii 0.5 and 1, height 1 (256 facets around)\n"
     "  --particles N       the number of particles sought (default 30000)\n"
     "  --features-angle D  sharp edges of surfaces (default 0 = none; 60 for cube and cylinder)\n"
@@ -90,6 +94,16 @@ const char* usage =
     "  --out-dir DIR       write <model>_hexdom.vtu (cell type, scaled Jacobians), .msh and .mesh\n"
     "  --seed N            seed of the particles and of make_mesh_3 (default 0)\n"
     "  --verbose           progress of the particle rounds\n";
+
+// T of the constant fields
+std::optional<Eigen::Matrix3d> constant_frame(const std::string& f)
+{
+  if(f == "identity" || f == "fig4.15a") return Eigen::Matrix3d::Identity();
+  if(f == "fig4.15b") return FF::constant_stretch_frame_field<K>().T(Point_3(0, 0, 0));
+  if(f == "fig4.15e") return FF::shear_y_frame_field<K>().T(Point_3(0, 0, 0));
+  if(f == "fig4.15f") return FF::shear_yz_frame_field<K>().T(Point_3(0, 0, 0));
+  return std::nullopt;
+}
 
 struct Options
 {
@@ -137,12 +151,17 @@ Options parse_command_line(int argc, char** argv)
     else throw Input_error("more than one INPUT given ('" + o.input + "', '" + arg + "')");
   }
   if(o.input.empty()) throw Input_error("no INPUT given");
-  const bool builtin = o.input == "cube" || o.input == "cylinder";
-  if(o.field.empty()) o.field = o.input == "cube" ? "identity" : o.input == "cylinder" ? "cylinder-scaled" : "cross";
+  const bool builtin = o.input == "cube" || o.input == "warped-cube" || o.input == "cylinder";
+  if(o.field.empty())
+    o.field = o.input == "cube" ? "identity" : o.input == "warped-cube" ? "fig4.15e"
+            : o.input == "cylinder" ? "cylinder-scaled" : "cross";
   static const std::vector<std::string> fields = {"cross", "identity", "fig4.15a", "fig4.15b", "fig4.15c", "fig4.15d",
                                                   "fig4.15e", "fig4.15f", "cylinder", "cylinder-scaled"};
   if(std::find(fields.begin(), fields.end(), o.field) == fields.end()) throw Input_error("unknown --field '" + o.field + "'");
-  if(o.field.rfind("fig4.15", 0) == 0 && o.input != "cube") throw Input_error("--field " + o.field + " is defined on INPUT cube");
+  if(o.field.rfind("fig4.15", 0) == 0 && o.input != "cube" && o.input != "warped-cube")
+    throw Input_error("--field " + o.field + " is defined on INPUT cube or warped-cube");
+  if(o.input == "warped-cube" && !constant_frame(o.field))
+    throw Input_error("INPUT warped-cube needs a constant field: identity or fig4.15a, b, e, f");
   if(o.field.rfind("cylinder", 0) == 0 && o.input != "cylinder")
     throw Input_error("--field " + o.field + " is defined on INPUT cylinder");
   if(o.features_angle < 0) o.features_angle = builtin ? 60. : 0.;
@@ -173,13 +192,9 @@ Surface_mesh tube_surface(int n)
 Field make_field(const Options& o, const Domain& domain, double volume)
 {
   const std::string& f = o.field;
-  auto constant = [](const Eigen::Matrix3d& T) { return Field([T](const Point_3&) { return T; }); };
-  if(f == "identity" || f == "fig4.15a") return constant(Eigen::Matrix3d::Identity());
-  if(f == "fig4.15b") return constant(FF::constant_stretch_frame_field<K>().T(Point_3(0, 0, 0)));
+  if(const auto T = constant_frame(f)) return Field([T = *T](const Point_3&) { return T; });
   if(f == "fig4.15c") return FF::linear_scale_frame_field<K>();
   if(f == "fig4.15d") return FF::single_direction_anisotropy_frame_field<K>();
-  if(f == "fig4.15e") return constant(FF::shear_y_frame_field<K>().T(Point_3(0, 0, 0)));
-  if(f == "fig4.15f") return constant(FF::shear_yz_frame_field<K>().T(Point_3(0, 0, 0)));
   if(f == "cylinder") return FF::cylinder_frame_field<K>(1., false);
   if(f == "cylinder-scaled") return FF::cylinder_frame_field<K>(1., true);
   // cross: on a mesh about as fine as the lattice
@@ -234,6 +249,16 @@ int run(const Options& o)
     const bool shifted = o.field == "fig4.15c" || o.field == "fig4.15d";
     surface = vvm_benchmark::box_surface<Surface_mesh>(shifted ? 0.1 : -1., shifted ? 1.1 : 1.);
     model = "cube";
+  } else if(o.input == "warped-cube") {
+    surface = vvm_benchmark::box_surface<Surface_mesh>(-1., 1.);
+    const Eigen::Matrix3d T = *constant_frame(o.field) / std::cbrt(std::abs(constant_frame(o.field)->determinant()));
+    for(auto v : surface.vertices()) {
+      const Point_3& p = surface.point(v);
+      const Eigen::Vector3d x = T * Eigen::Vector3d(p.x(), p.y(), p.z());
+      surface.point(v) = Point_3(x[0], x[1], x[2]);
+    }
+    if(T.determinant() < 0) PMP::reverse_face_orientations(surface);
+    model = "warped-cube";
   } else if(is_cylinder) {
     surface = tube_surface(256);
     model = "cylinder";
@@ -357,6 +382,8 @@ int run(const Options& o)
   std::printf("merging (last): candidates %.2f s, selection %.2f s; %zu hexahedron, %zu prism, %zu pyramid candidates\n",
               report.merge.candidate_time, report.merge.selection_time, report.merge.number_of_hexahedron_candidates,
               report.merge.number_of_prism_candidates, report.merge.number_of_pyramid_candidates);
+  std::printf("tets: %zu free particles projected, %zu flips to the field's Delaunay\n",
+              report.number_of_projected_particles, report.number_of_metric_flips);
   std::printf("make_mesh_3 at %zu vertices: boundary distance %.5g (hd0)\n", make_mesh_3_vertices, make_mesh_3_distance);
   return 0;
 }

@@ -6,12 +6,17 @@
 // - the Delaunay tets of a perfect cubic grid merge into hexahedra only;
 // - on random Delaunay tets the cells partition the tets, are positively oriented, conform,
 //   and conflicting candidates are never both kept;
+// - tets Delaunay in the field's space: the metric flips turn the Euclidean Delaunay tets of
+//   a stretched grid, which cross its boxes, into tets that merge; make_hex_dominant_mesh_3 on
+//   a warped cube with a shear field gives hexahedra only;
 // - bad inputs throw.
 
 #include <CGAL/make_hex_dominant_mesh_3.h>
 #include <CGAL/tets_to_hex_dominant.h>
 #include <CGAL/Frame_fields/Constant_frame_field_3.h>
 #include <CGAL/Hex_dominant_meshing/hex_dominant_statistics.h>
+#include <CGAL/Hex_dominant_meshing/internal/Metric_Delaunay_flips.h>
+#include <CGAL/GSM_mesh_optimization/internal/Triangulation_complex.h>
 
 #include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
 #include <CGAL/Mesh_complex_3_in_triangulation_3.h>
@@ -458,6 +463,83 @@ void test_make_hex_dominant_mesh_on_cube()
   CHECK(throws([&] { CGAL::make_hex_dominant_mesh_3<Cube_c3t3>(domain, Constant_field(), HDM::parameters::quality_bound(2.)); }));
 }
 
+// the Euclidean Delaunay tets of a perturbed grid of 4 x 1 x 1 boxes cross the boxes; the
+// flips towards the Delaunay tets in the space of T = diag(4, 1, 1) let more of them merge,
+// keep a valid partition, and end at a fixed point
+void test_metric_flips()
+{
+  CGAL::Random random(11);
+  std::vector<Point_3> points;
+  const int n = 8;
+  for(int i = 0; i < n; ++i)
+    for(int j = 0; j < n; ++j)
+      for(int k = 0; k < n; ++k)
+        points.emplace_back(4 * (i + random.get_double(-0.04, 0.04)), j + random.get_double(-0.04, 0.04),
+                            k + random.get_double(-0.04, 0.04));
+  Delaunay tr(points.begin(), points.end());
+  const Constant_field field(Eigen::Vector3d(4, 1, 1).asDiagonal());
+  auto hexahedra = [&] {
+    return CGAL::tets_to_hex_dominant(tr, HDM::parameters::frame_field(field)).number_of_cells(CGAL::Hex_dominant_cell_type::HEXAHEDRON);
+  };
+  const std::size_t before = hexahedra();
+  CGAL::GSM_mesh_optimization::internal::Triangulation_complex<Delaunay> complex(tr);
+  HDM::internal::Metric_Delaunay_flips<decltype(complex)> flips(complex, [](const Eigen::Vector3d&) {
+    return Eigen::Matrix3d(Eigen::Vector3d(0.25, 1, 1).asDiagonal());
+  });
+  const std::size_t done = flips.run(100000);
+  const std::size_t after = hexahedra();
+  std::cout << "metric flips, 4x1x1 boxes " << n << "^3: " << done << " flips, hexahedra " << before << " -> " << after
+            << " of " << (n - 1) * (n - 1) * (n - 1) << "\n";
+  // Lawson's flips can get stuck in 3D (here at 280 of 343): make_hex_dominant_mesh_3 starts
+  // from the Delaunay tets of the points mapped by the field's mean metric, exact for a
+  // constant field, and flips only for the variation of the field
+  CHECK(done > 0 && after > before);
+  CHECK(tr.tds().is_valid());
+  std::size_t positive = 0;
+  for(auto c : tr.finite_cell_handles()) positive += tr.tetrahedron(c).orientation() == CGAL::POSITIVE;
+  CHECK(positive == tr.number_of_finite_cells());
+  HDM::Hex_dominant_merge_report report;
+  const Mesh mesh = CGAL::tets_to_hex_dominant(tr, HDM::parameters::frame_field(field, HDM::parameters::merge_report(&report)));
+  check_partition(mesh, report, tr, 0.02);
+  // a second run finds nothing left to flip
+  CHECK(flips.run(100000) == 0);
+}
+
+// make_hex_dominant_mesh_3 on the warped cube T [-1, 1]^3 of the shear T of Fig. 4.15e: its
+// faces are lattice planes, and the tets (Delaunay of the particles mapped into the field's
+// space) merge into hexahedra only
+void test_make_hex_dominant_mesh_on_warped_cube()
+{
+  Surface_mesh surface;
+  CHECK(CGAL::IO::read_polygon_mesh(std::string(VVM_DATA_DIR) + "/cube.off", surface));
+  Eigen::Matrix3d T;
+  T << 1, 1, 0,
+       0, 2, 0,
+       0, 0, 1;
+  T /= std::cbrt(T.determinant());
+  for(auto v : surface.vertices()) {
+    const Point_3& p = surface.point(v);
+    const Eigen::Vector3d x = T * Eigen::Vector3d(p.x(), p.y(), p.z());
+    surface.point(v) = Point_3(x[0], x[1], x[2]);
+  }
+  Cube_domain domain(surface);
+  domain.detect_features(60);
+  HDM::Hex_dominant_report report;
+  const Constant_field field(T);
+  const Mesh mesh = CGAL::make_hex_dominant_mesh_3<Cube_c3t3>(
+      domain, field, TLM::parameters::edge_length(0.25, HDM::parameters::hex_dominant_report(&report,
+          TLM::parameters::number_of_threads(2, CGAL::parameters::random_seed(1u)))));
+  const HDM::Hex_dominant_statistics s = HDM::hex_dominant_statistics(
+      mesh, [&](const Eigen::Vector3d&) { return field.B(Point_3(0, 0, 0)); }, &report.merge);
+  std::cout << "make_hex_dominant_mesh_3, warped cube (shear), l* 0.25: " << report.number_of_particles << " particles, "
+            << report.number_of_metric_flips << " metric flips -> " << s.number_of_hexahedra << " hex, "
+            << mesh.cells.size() - s.number_of_hexahedra << " other cells; H_vol " << s.hexahedron_volume_percent
+            << "%, SJ min " << s.scaled_jacobian_min << "\n";
+  CHECK(s.number_of_inverted_cells == 0 && s.number_of_nonconforming_faces == 0);
+  CHECK(s.hexahedron_volume_percent > 99.);
+  CHECK(s.scaled_jacobian_min > 0.9);
+}
+
 void test_bad_input()
 {
   std::vector<Point_3> p = {Point_3(0, 0, 0), Point_3(1, 0, 0), Point_3(0, 1, 0), Point_3(0, 0, 1)};
@@ -480,6 +562,8 @@ int main()
   test_random_tets();
   test_nonconforming_detected();
   test_make_hex_dominant_mesh_on_cube();
+  test_metric_flips();
+  test_make_hex_dominant_mesh_on_warped_cube();
   test_bad_input();
   if(failures) std::cerr << failures << " checks failed\n";
   else std::cout << "all checks passed\n";

@@ -10,12 +10,16 @@
 
 #include <CGAL/Hex_dominant_mesh_3.h>
 #include <CGAL/Hex_dominant_meshing/parameters.h>
+#include <CGAL/Hex_dominant_meshing/internal/Metric_Delaunay_flips.h>
 #include <CGAL/tets_to_hex_dominant.h>
 #include <CGAL/make_lattice_mesh_3.h>
 
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/Real_timer.h>
 
+#include <Eigen/Eigenvalues>
+
+#include <cmath>
 #include <functional>
 #include <stdexcept>
 #include <string>
@@ -40,6 +44,7 @@ struct Hex_dominant_report
   std::size_t number_of_particles = 0;
   double edge_length = 0;            ///< \f$ l^* \f$
   std::size_t number_of_projected_particles = 0; ///< free particles the tets left on the boundary, put onto it
+  std::size_t number_of_metric_flips = 0; ///< flips that made the tets Delaunay in the field's space
   double particle_time = 0;          ///< seconds
   double tetrahedra_time = 0;        ///< seconds
   double merge_time = 0;             ///< seconds
@@ -47,6 +52,30 @@ struct Hex_dominant_report
 };
 
 namespace internal {
+
+/// the square root of the field's metric \f$ B^T B \f$ averaged over the points (each scaled
+/// by its trace), of determinant 1: the Delaunay tets of the points mapped by it stay inside
+/// the cells of the lattice of a constant field (boxes, parallelepipeds), and the metric flips
+/// have less to do for a varying one. The identity for a field of unit frames (a cross
+/// field), which `isotropic` tells: no flip can change anything then.
+template <class FrameField, class Point_3>
+Eigen::Matrix3d mean_metric_root(const FrameField& field, const std::vector<Point_3>& points, bool& isotropic)
+{
+  auto is_isotropic = [](const Eigen::Vector3d& lambda) { return lambda.maxCoeff() < (1 + 1e-3) * lambda.minCoeff(); };
+  Eigen::Matrix3d M = Eigen::Matrix3d::Zero();
+  isotropic = true;
+  for(const Point_3& p : points) {
+    const Eigen::Matrix3d B = field.B(typename FrameField::Point_3(p.x(), p.y(), p.z()));
+    const Eigen::Matrix3d m = B.transpose() * B;
+    M += m / m.trace();
+    if(isotropic) isotropic = is_isotropic(Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(m, Eigen::EigenvaluesOnly).eigenvalues());
+  }
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(M);
+  const Eigen::Vector3d lambda = eigen.eigenvalues();
+  if(!(lambda.minCoeff() > 1e-6 * lambda.maxCoeff()) || is_isotropic(lambda)) return Eigen::Matrix3d::Identity();
+  const Eigen::Matrix3d root = eigen.operatorSqrt();
+  return root / std::cbrt(root.determinant());
+}
 
 template <class C3T3, class MeshDomain, class FrameField, class NamedParameters>
 Hex_dominant_mesh_3<typename MeshDomain::R::Point_3>
@@ -76,10 +105,19 @@ make_hex_dominant_mesh(const MeshDomain& domain, const FrameField& field,
   CGAL::Real_timer timer;
   timer.start();
   C3T3 c3t3;
-  TLM_internal::connect_lattice_particles(c3t3, domain, pd, r.number_of_projected_particles);
+  bool isotropic = true;
+  const Eigen::Matrix3d delaunay_map = mean_metric_root(field, pd.particles.points, isotropic);
+  TLM_internal::connect_lattice_particles(c3t3, domain, pd, r.number_of_projected_particles, delaunay_map);
   if(c3t3.number_of_cells_in_complex() == 0)
     throw std::invalid_argument("make_hex_dominant_mesh_3: the particles make no cell inside the domain "
                                 "(edge length too large for it?)");
+  // the cells of the lattice are cubes in the field's space: their tets must be Delaunay there
+  if(!isotropic) {
+    Metric_Delaunay_flips<C3T3> flips(c3t3, [&field](const Eigen::Vector3d& x) {
+      return Eigen::Matrix3d(field.B(typename FrameField::Point_3(x[0], x[1], x[2])));
+    });
+    r.number_of_metric_flips = flips.run(20 * c3t3.number_of_cells_in_complex());
+  }
   r.tetrahedra_time = timer.time();
   if(stage_visitor) stage_visitor(HDM::Hex_dominant_stage::TETRAHEDRA, r.tetrahedra_time);
 
@@ -117,8 +155,10 @@ Tetrahedral_lattice_meshing::internal::Lattice_request read_hex_dominant_request
  * \f$ \sigma = 0.3 l^* \f$, \f$ R = 1.5 l^* \f$, the thresholds of Table 4.5; the number of
  * particles estimated from the domain's volume in the field's space), connected into tets as
  * `make_lattice_mesh_3()` does (CGAL's Delaunay triangulation, cells labelled by subdomain,
- * boundary facets, feature edges), then merged by `tets_to_hex_dominant()` with the qualities
- * measured in the field's space.
+ * boundary facets, feature edges; the Delaunay tets of the particles mapped by the square
+ * root of the field's mean metric), made Delaunay in the field's space by flips inside each
+ * subdomain (the lattice's cells are cubes there, boxes or parallelepipeds in Euclidean space),
+ * then merged by `tets_to_hex_dominant()` with the qualities measured in the field's space.
  *
  * \tparam C3T3 a `Mesh_complex_3_in_triangulation_3` of a `Mesh_triangulation_3` of `MeshDomain`,
  *   for the tets

@@ -102,9 +102,10 @@ void optimize_lattice_mesh(C3T3& c3t3, const MeshDomain& domain, const FrameFiel
 /// tents off the surface: they go onto the surface and the particles are connected again
 template <class C3T3, class MeshDomain>
 Complex_report connect_lattice_particles(C3T3& c3t3, const MeshDomain& domain, Particles_in_domain<MeshDomain>& pd,
-                                         std::size_t& number_of_projected_particles)
+                                         std::size_t& number_of_projected_particles,
+                                         const Eigen::Matrix3d& delaunay_map = Eigen::Matrix3d::Identity())
 {
-  Complex_report cr = connect_particles(c3t3, domain, *pd.boundary, pd.particles);
+  Complex_report cr = connect_particles(c3t3, domain, *pd.boundary, pd.particles, delaunay_map);
   for(int pass = 0; pass < 3 && !cr.exposed_free_particles.empty(); ++pass) {
     for(std::size_t i : cr.exposed_free_particles) {
       auto& p = pd.particles.points[i];
@@ -114,7 +115,7 @@ Complex_report connect_lattice_particles(C3T3& c3t3, const MeshDomain& domain, P
       pd.particles.features[i] = c.feature;
     }
     number_of_projected_particles += cr.exposed_free_particles.size();
-    cr = connect_particles(c3t3, domain, *pd.boundary, pd.particles);
+    cr = connect_particles(c3t3, domain, *pd.boundary, pd.particles, delaunay_map);
   }
   return cr;
 }

@@ -24,8 +24,11 @@ namespace CGAL {
 namespace GSM_mesh_optimization {
 namespace internal {
 
+/// the bookkeeping of any change of connectivity inside one subdomain, whatever
+/// decides it (GSM's energy here, the metric Delaunay criterion of the
+/// hex-dominant package)
 template <class C3T3>
-class Cell_replacement
+class Complex_cell_replacement
 {
 public:
   typedef typename C3T3::Triangulation Tr;
@@ -35,23 +38,10 @@ public:
   typedef typename Tr::Edge Edge;
   typedef typename C3T3::Subdomain_index Subdomain_index;
   typedef typename C3T3::Surface_patch_index Surface_patch_index;
-  typedef Mesh_energy<C3T3> Energy;
 
-  /// `sum` and `count`: the running total of the energies of the cells in the complex
-  Cell_replacement(C3T3& c3t3, const Energy& energy, double& sum, std::size_t& count)
-    : c3t3_(c3t3), tr_(c3t3.triangulation()), energy_(energy), sum_(sum), count_(count)
-  {}
-
-  double mean() const { return count_ > 0 ? sum_ / double(count_) : 0.; }
+  explicit Complex_cell_replacement(C3T3& c3t3) : c3t3_(c3t3), tr_(c3t3.triangulation()) {}
 
 protected:
-  /// the acceptance criterion: replacing cells of total energy `old_sum` by
-  /// `cell_difference` more cells of total energy `new_sum` lowers the mean
-  bool lowers_mean(double old_sum, double new_sum, int cell_difference) const
-  {
-    return new_sum - old_sum < double(cell_difference) * mean();
-  }
-
   typename Tr::Geom_traits::Point_3 bare(const Vertex_handle& v) const
   {
     return tr_.geom_traits().construct_point_3_object()(tr_.point(v));
@@ -62,13 +52,6 @@ protected:
                                 const Vertex_handle& d) const
   {
     return tr_.geom_traits().orientation_3_object()(bare(a), bare(b), bare(c), bare(d));
-  }
-
-  double tet_energy(const Vertex_handle& a, const Vertex_handle& b, const Vertex_handle& c,
-                    const Vertex_handle& d) const
-  {
-    return energy_.tetrahedron(energy_.position(a), energy_.position(b), energy_.position(c),
-                               energy_.position(d));
   }
 
   // number of cells around `e`, counted up to `cap`
@@ -191,14 +174,54 @@ protected:
       }
   }
 
+  C3T3& c3t3_;
+  Tr& tr_;
+};
+
+/// a change of connectivity taken when it lowers the mean energy
+template <class C3T3>
+class Cell_replacement : public Complex_cell_replacement<C3T3>
+{
+  typedef Complex_cell_replacement<C3T3> Base;
+
+public:
+  typedef typename Base::Tr Tr;
+  typedef typename Base::Vertex_handle Vertex_handle;
+  typedef typename Base::Cell_handle Cell_handle;
+  typedef typename Base::Facet Facet;
+  typedef typename Base::Edge Edge;
+  typedef typename Base::Subdomain_index Subdomain_index;
+  typedef typename Base::Surface_patch_index Surface_patch_index;
+  typedef Mesh_energy<C3T3> Energy;
+
+  /// `sum` and `count`: the running total of the energies of the cells in the complex
+  Cell_replacement(C3T3& c3t3, const Energy& energy, double& sum, std::size_t& count)
+    : Base(c3t3), energy_(energy), sum_(sum), count_(count)
+  {}
+
+  double mean() const { return count_ > 0 ? sum_ / double(count_) : 0.; }
+
+protected:
+  /// the acceptance criterion: replacing cells of total energy `old_sum` by
+  /// `cell_difference` more cells of total energy `new_sum` lowers the mean
+  bool lowers_mean(double old_sum, double new_sum, int cell_difference) const
+  {
+    return new_sum - old_sum < double(cell_difference) * mean();
+  }
+
+  double tet_energy(const Vertex_handle& a, const Vertex_handle& b, const Vertex_handle& c,
+                    const Vertex_handle& d) const
+  {
+    return energy_.tetrahedron(energy_.position(a), energy_.position(b), energy_.position(c),
+                               energy_.position(d));
+  }
+
   void account(double old_sum, double new_sum, int cell_difference)
   {
     sum_ += new_sum - old_sum;
     count_ = std::size_t(std::ptrdiff_t(count_) + cell_difference);
   }
 
-  C3T3& c3t3_;
-  Tr& tr_;
   const Energy& energy_;
   double& sum_;
   std::size_t& count_;

@@ -15,8 +15,12 @@
 
 #include <CGAL/Tetrahedral_lattice_meshing/lattice_particle_types.h>
 
+#include <CGAL/Delaunay_triangulation_3.h>
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Mesh_3/Has_features.h>
+#include <CGAL/Triangulation_vertex_base_with_info_3.h>
 #include <CGAL/Spatial_sort_traits_adapter_3.h>
+#include <CGAL/Time_stamper.h>
 #include <CGAL/property_map.h>
 #include <CGAL/spatial_sort.h>
 
@@ -27,8 +31,9 @@
 #include <cmath>
 #include <cstddef>
 #include <map>
-#include <set>
 #include <numeric>
+#include <set>
+#include <unordered_map>
 #include <vector>
 
 namespace CGAL {
@@ -62,9 +67,72 @@ inline bool is_flat(const std::array<Eigen::Vector3d, 4>& p)
   return !(largest_face > 0) || volume6 / largest_face < 0.1 * longest;
 }
 
+/// the Delaunay tets of `points` mapped by `map` (positive determinant) put into `tr` with the
+/// points at their own places: the cells stay positive, since the map keeps orientations;
+/// the mapped points are exact (Epeck), since rounding them would not keep coplanar particles
+/// (those of a planar face) coplanar and would leave flat cells. `vertex[i]` is the vertex of
+/// `points[i]`, or null for a point at the place of an earlier one.
+template <class Tr, class Bare_point>
+void insert_mapped_Delaunay(Tr& tr, const std::vector<Bare_point>& points, const Eigen::Matrix3d& map,
+                            std::vector<typename Tr::Vertex_handle>& vertex)
+{
+  typedef CGAL::Exact_predicates_exact_constructions_kernel EK;
+  typedef CGAL::Triangulation_vertex_base_with_info_3<std::size_t, EK> Vb;
+  typedef CGAL::Delaunay_triangulation_3<EK, CGAL::Triangulation_data_structure_3<Vb>> Mapped;
+  std::vector<std::pair<EK::Point_3, std::size_t>> mapped;
+  mapped.reserve(points.size());
+  for(std::size_t i = 0; i < points.size(); ++i) {
+    const EK::FT x(points[i].x()), y(points[i].y()), z(points[i].z());
+    auto row = [&](int r) { return EK::FT(map(r, 0)) * x + EK::FT(map(r, 1)) * y + EK::FT(map(r, 2)) * z; };
+    mapped.emplace_back(EK::Point_3(row(0), row(1), row(2)), i);
+  }
+  const Mapped dt(mapped.begin(), mapped.end());
+  typedef typename Tr::Vertex Vertex;
+  typedef typename Tr::Cell Cell;
+  typedef typename Tr::Geom_traits::Weighted_point_3 Weighted_point;
+  std::unordered_map<const Vertex*, std::size_t> particle_of;
+  const auto* infinite = &*dt.infinite_vertex();
+  struct Convert_vertex
+  {
+    const std::vector<Bare_point>& points;
+    const typename Mapped::Vertex* infinite;
+    std::unordered_map<const Vertex*, std::size_t>& particle_of;
+    Vertex operator()(const typename Mapped::Vertex& v) const
+    {
+      Vertex t;
+      CGAL::Time_stamper<Vertex>::initialize_time_stamp(&t); // Mesh_3's default constructors leave it unset
+      if(&v != infinite) t.set_point(Weighted_point(points[v.info()], 0));
+      return t;
+    }
+    void operator()(const typename Mapped::Vertex& v, Vertex& t) const
+    {
+      if(&v != infinite) particle_of[&t] = v.info();
+    }
+  };
+  struct Convert_cell
+  {
+    Cell operator()(const typename Mapped::Cell&) const
+    {
+      Cell c;
+      CGAL::Time_stamper<Cell>::initialize_time_stamp(&c);
+      return c;
+    }
+    void operator()(const typename Mapped::Cell&, Cell&) const {}
+  };
+  tr.clear();
+  tr.set_infinite_vertex(tr.tds().copy_tds(dt.tds(), dt.infinite_vertex(), Convert_vertex{points, infinite, particle_of},
+                                           Convert_cell()));
+  vertex.assign(points.size(), typename Tr::Vertex_handle());
+  for(auto v : tr.finite_vertex_handles()) vertex[particle_of.at(&*v)] = v;
+}
+
+/// `delaunay_map`: the tets are the Delaunay tets of the particles mapped by this linear map
+/// (with a positive determinant; e.g. the square root of the field's mean metric, so that the
+/// cells of a sheared or stretched lattice are not crossed), back at their own places
 template <class C3T3, class MeshDomain, class Boundary, class Point_3>
 Complex_report connect_particles(C3T3& c3t3, const MeshDomain& domain, const Boundary& boundary,
-                                 const Lattice_particles_3<Point_3>& particles)
+                                 const Lattice_particles_3<Point_3>& particles,
+                                 const Eigen::Matrix3d& delaunay_map = Eigen::Matrix3d::Identity())
 {
   typedef typename C3T3::Triangulation Tr;
   typedef typename Tr::Vertex_handle Vertex_handle;
@@ -93,14 +161,22 @@ Complex_report connect_particles(C3T3& c3t3, const MeshDomain& domain, const Bou
   const std::vector<Bare_point>& cpoints = points;
   CGAL::spatial_sort(order.begin(), order.end(), Sort_traits(CGAL::make_property_map(cpoints)));
   std::vector<Vertex_handle> vertex(n);
-  Cell_handle hint;
-  for(std::size_t i : order) {
-    vertex[i] = tr.insert(Weighted_point(points[i], 0), hint);
-    if(vertex[i] != Vertex_handle()) hint = vertex[i]->cell();
+  const bool mapped = !delaunay_map.isIdentity(0);
+  if(mapped)
+    insert_mapped_Delaunay(tr, points, delaunay_map, vertex);
+  else {
+    Cell_handle hint;
+    for(std::size_t i : order) {
+      vertex[i] = tr.insert(Weighted_point(points[i], 0), hint);
+      if(vertex[i] != Vertex_handle()) hint = vertex[i]->cell();
+    }
   }
   std::map<Vertex_handle, std::size_t> particle_of;
   for(std::size_t i = 0; i < n; ++i) {
-    if(vertex[i] == Vertex_handle()) continue;
+    if(vertex[i] == Vertex_handle()) { // left out by the mapped Delaunay: at the place of another
+      ++report.number_of_merged_particles;
+      continue;
+    }
     if(!particle_of.emplace(vertex[i], i).second) ++report.number_of_merged_particles;
   }
   report.number_of_vertices = tr.number_of_vertices();

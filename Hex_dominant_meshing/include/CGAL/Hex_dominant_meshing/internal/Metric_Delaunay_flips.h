@@ -1,0 +1,176 @@
+// Copyright (c) 2026 VVM contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Makes the tets of lattice particles Delaunay in the frame field's space by
+// 2-3 and 3-2 flips (Lawson's flips with the in-sphere test of the points
+// mapped by B). A cubic lattice is a grid of cubes in the field's space, whose
+// Delaunay tets stay inside the cubes; in Euclidean space the cells are boxes
+// or parallelepipeds, and the Euclidean Delaunay tets of a slightly perturbed
+// grid of long boxes or sheared cells cross them, so that no hexahedron can be
+// merged there (a sheared 8^3 grid: 366 of 512 hexahedra from the Euclidean
+// tets, 499 after these flips).
+//
+// Only inside one subdomain, never across a surface facet or a feature edge;
+// every flip is checked exactly in Euclidean space (CGAL's Triangulation_3::flip).
+
+#ifndef CGAL_HEX_DOMINANT_MESHING_INTERNAL_METRIC_DELAUNAY_FLIPS_H
+#define CGAL_HEX_DOMINANT_MESHING_INTERNAL_METRIC_DELAUNAY_FLIPS_H
+
+#include <CGAL/GSM_mesh_optimization/internal/Cell_replacement.h>
+
+#include <Eigen/LU>
+
+#include <array>
+#include <cmath>
+#include <functional>
+#include <vector>
+
+namespace CGAL {
+namespace Hex_dominant_meshing {
+namespace internal {
+
+template <class C3T3>
+class Metric_Delaunay_flips : public GSM_mesh_optimization::internal::Complex_cell_replacement<C3T3>
+{
+  typedef GSM_mesh_optimization::internal::Complex_cell_replacement<C3T3> Base;
+
+public:
+  typedef typename Base::Vertex_handle Vertex_handle;
+  typedef typename Base::Cell_handle Cell_handle;
+  typedef typename Base::Facet Facet;
+  typedef typename Base::Edge Edge;
+  typedef typename Base::Subdomain_index Subdomain_index;
+  /// B(x), the map into the field's space
+  typedef std::function<Eigen::Matrix3d(const Eigen::Vector3d&)> Frame_inverse;
+
+  /// points closer to cospherical than this (the lifted determinant over the fifth power
+  /// of the edge length) are
+  /// left as they are: the corners of a cube in the field's space are cospherical,
+  /// and any of their triangulations merges
+  static constexpr double tie_tolerance = 1e-4;
+
+  Metric_Delaunay_flips(C3T3& c3t3, Frame_inverse B) : Base(c3t3), B_(std::move(B)) {}
+
+  /// flips until every facet inside a subdomain is Delaunay in the field's space, or no
+  /// flip can fix the rest, or `max_flips` flips (a field that varies from cell to cell
+  /// has no global Delaunay triangulation, and the flips could cycle); returns the flips
+  std::size_t run(std::size_t max_flips)
+  {
+    std::size_t flips = 0;
+    // a facet that no flip could fix may be fixed once its neighbours changed: passes over
+    // all facets until one flips nothing
+    for(std::size_t pass_start = std::size_t(-1); flips != pass_start && flips < max_flips;)
+      pass_start = flips, flips += pass(max_flips - flips);
+    return flips;
+  }
+
+private:
+  std::size_t pass(std::size_t max_flips)
+  {
+    std::vector<std::array<Vertex_handle, 3>> stack;
+    for(auto c = this->c3t3_.cells_in_complex_begin(); c != this->c3t3_.cells_in_complex_end(); ++c)
+      for(int i = 0; i < 4; ++i)
+        if(Cell_handle(c) < c->neighbor(i)) stack.push_back(facet_vertices(Facet(c, i)));
+    std::size_t flips = 0;
+    while(!stack.empty() && flips < max_flips) {
+      const std::array<Vertex_handle, 3> t = stack.back();
+      stack.pop_back();
+      Cell_handle c;
+      int i, j, k;
+      if(!this->tr_.is_facet(t[0], t[1], t[2], c, i, j, k)) continue;
+      const Facet f(c, 6 - i - j - k);
+      Subdomain_index s;
+      if(!this->same_subdomain({c, c->neighbor(f.second)}, s) || this->c3t3_.is_in_complex(f) || !violates(f))
+        continue;
+      std::vector<Cell_handle> created;
+      if(!flip_2_3(f, s, created) && !flip_3_2(f, created)) continue;
+      ++flips;
+      for(const Cell_handle& n : created)
+        for(int m = 0; m < 4; ++m) stack.push_back(facet_vertices(Facet(n, m)));
+    }
+    return flips;
+  }
+
+  std::array<Vertex_handle, 3> facet_vertices(const Facet& f) const
+  {
+    return {f.first->vertex((f.second + 1) & 3), f.first->vertex((f.second + 2) & 3),
+            f.first->vertex((f.second + 3) & 3)};
+  }
+
+  Eigen::Vector3d position(const Vertex_handle& v) const
+  {
+    const auto p = this->bare(v);
+    return Eigen::Vector3d(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+  }
+
+  // the vertex of the neighbour beyond f lies inside the sphere through f's cell, in the
+  // field's space at the centroid of the five points: the sign of the lifted determinant,
+  // one number for the five points whichever of their triangulations is tested, so that
+  // a flip is never undone by the reverse one, ties included
+  bool violates(const Facet& f) const
+  {
+    const Cell_handle c = f.first, n = c->neighbor(f.second);
+    std::array<Eigen::Vector3d, 4> x; // the cell's vertices (positively oriented), from the one beyond
+    const Eigen::Vector3d t = position(n->vertex(n->index(c)));
+    Eigen::Vector3d centroid = t / 5.;
+    for(int k = 0; k < 4; ++k) centroid += (x[k] = position(c->vertex(k))) / 5.;
+    const Eigen::Matrix3d B = B_(centroid);
+    Eigen::Matrix4d lifted;
+    double edge2 = 0;
+    for(int k = 0; k < 4; ++k) {
+      const Eigen::Vector3d y = B * (x[k] - t);
+      lifted.row(k) << y.transpose(), y.squaredNorm();
+      for(int m = k + 1; m < 4; ++m) edge2 += (B * (x[k] - x[m])).squaredNorm() / 6.;
+    }
+    // B keeps the orientation or reverses it; inside when the determinant has the other sign
+    const double inside = -lifted.determinant() * (B.determinant() > 0 ? 1. : -1.);
+    return std::isfinite(inside) && inside > tie_tolerance * edge2 * edge2 * std::sqrt(edge2);
+  }
+
+  // the facet's two cells become three around the edge between their apexes
+  bool flip_2_3(const Facet& f, const Subdomain_index& s, std::vector<Cell_handle>& created)
+  {
+    const Cell_handle c = f.first, n = c->neighbor(f.second);
+    const Vertex_handle a = c->vertex(f.second), b = n->vertex(n->index(c));
+    this->release({c, n});
+    if(!this->tr_.flip(c, f.second)) { // not convex: CGAL checks it exactly
+      this->claim({c, n}, s);
+      return false;
+    }
+    created = this->cells_around(a, b);
+    this->claim(created, s);
+    return true;
+  }
+
+  // the three cells around an edge of the facet become two
+  bool flip_3_2(const Facet& f, std::vector<Cell_handle>& created)
+  {
+    const std::array<Vertex_handle, 3> t = facet_vertices(f);
+    for(int k = 0; k < 3; ++k) {
+      const Vertex_handle p = t[k], q = t[(k + 1) % 3];
+      const Cell_handle c = f.first;
+      const Edge e(c, c->index(p), c->index(q));
+      std::vector<Cell_handle> ring;
+      std::vector<Vertex_handle> others;
+      Subdomain_index s;
+      if(!this->removable_edge(e, ring, others, s, 3) || ring.size() != 3) continue;
+      this->release(ring);
+      if(!this->tr_.flip(e)) {
+        this->claim(ring, s);
+        continue;
+      }
+      created = this->cells_on(others[0], others[1], others[2]);
+      this->claim(created, s);
+      return true;
+    }
+    return false;
+  }
+
+  Frame_inverse B_;
+};
+
+} // namespace internal
+} // namespace Hex_dominant_meshing
+} // namespace CGAL
+
+#endif // CGAL_HEX_DOMINANT_MESHING_INTERNAL_METRIC_DELAUNAY_FLIPS_H
