@@ -73,7 +73,7 @@ const char* usage =
     "usage: compare_hex_dominant INPUT [--particles N] [--features-angle DEG]\n"
     "                            [--field cross|identity|fig4.15a..f|cylinder|cylinder-scaled]\n"
     "                            [--q-bound X | --q-bound-sweep] [--threads N] [--json FILE] [--out-dir DIR]\n"
-    "                            [--seed N] [--verbose]\n"
+    "                            [--boundary-distance D] [--seed N] [--verbose]\n"
     "  INPUT  a closed triangle surface (OFF, OBJ, PLY, STL, ...), or cube, warped-cube or cylinder:\n"
     "         cube is [-1,1]^3 ([0.1,1.1]^3 with fig4.15c and fig4.15d); warped-cube is T [-1,1]^3\n"
     "         for a constant field T (fig4.15b, e, f; scaled to volume 8), the warped cube of\n"
@@ -92,6 +92,8 @@ const char* usage =
     "  --threads N         maximum number of threads (default: all cores)\n"
     "  --json FILE         one JSON line per merging\n"
     "  --out-dir DIR       write <model>_hexdom.vtu (cell type, scaled Jacobians), .msh and .mesh\n"
+    "  --boundary-distance D  the boundary refinement of section 4.4.2 down to distance D (default 0:\n"
+    "                      none)\n"
     "  --seed N            seed of the particles and of make_mesh_3 (default 0)\n"
     "  --verbose           progress of the particle rounds\n";
 
@@ -109,7 +111,7 @@ struct Options
 {
   std::string input, field, json_file, out_dir;
   std::size_t particles = 30000;
-  double features_angle = -1, q_bound = 0.5;
+  double features_angle = -1, q_bound = 0.5, boundary_distance = 0;
   bool sweep = false, verbose = false;
   int threads = 0;
   unsigned seed = 0;
@@ -141,6 +143,10 @@ Options parse_command_line(int argc, char** argv)
       if(o.threads < 0) throw Input_error("--threads must be non-negative");
     } else if(arg == "--json") o.json_file = value();
     else if(arg == "--out-dir") o.out_dir = value();
+    else if(arg == "--boundary-distance") {
+      o.boundary_distance = parse_number<double>(arg, value());
+      if(!(o.boundary_distance >= 0)) throw Input_error("--boundary-distance must be non-negative");
+    }
     else if(arg == "--seed") o.seed = parse_number<unsigned>(arg, value());
     else if(arg == "--verbose") o.verbose = true;
     else if(arg == "--help" || arg == "-h") {
@@ -232,11 +238,12 @@ Surface_mesh boundary_of(const Mesh& mesh, const HDM::Hex_dominant_merge_report&
   return sm;
 }
 
-double two_sided_distance(const Surface_mesh& a, const Surface_mesh& b, double spacing)
+// the Hausdorff distance from a to b, and from b to a
+std::pair<double, double> two_sided_distance(const Surface_mesh& a, const Surface_mesh& b, double spacing)
 {
   const auto np = PMP::parameters::use_grid_sampling(true).grid_spacing(spacing);
-  return (std::max)(PMP::approximate_Hausdorff_distance<CGAL::Parallel_if_available_tag>(a, b, np),
-                    PMP::approximate_Hausdorff_distance<CGAL::Parallel_if_available_tag>(b, a, np));
+  return {PMP::approximate_Hausdorff_distance<CGAL::Parallel_if_available_tag>(a, b, np),
+          PMP::approximate_Hausdorff_distance<CGAL::Parallel_if_available_tag>(b, a, np)};
 }
 
 int run(const Options& o)
@@ -306,8 +313,9 @@ int run(const Options& o)
       mesh = CGAL::make_hex_dominant_mesh_3<C3T3>(
           domain, field,
           TP::number_of_particles(o.particles, TP::number_of_threads(o.threads,
-              HDM::parameters::quality_bound(q, HDM::parameters::hex_dominant_report(&report,
-                  HDM::parameters::tetrahedral_mesh(&tets, CGAL::parameters::random_seed(o.seed).verbose(o.verbose)))))));
+              HDM::parameters::quality_bound(q, HDM::parameters::boundary_distance(o.boundary_distance,
+                  HDM::parameters::hex_dominant_report(&report,
+                  HDM::parameters::tetrahedral_mesh(&tets, CGAL::parameters::random_seed(o.seed).verbose(o.verbose))))))));
     else { // the same tets merged again
       CGAL::Real_timer merge;
       merge.start();
@@ -316,7 +324,8 @@ int run(const Options& o)
       report.merge_time = merge.time();
     }
     const HDM::Hex_dominant_statistics s = HDM::hex_dominant_statistics(mesh, B, &report.merge);
-    const double distance = two_sided_distance(boundary_of(mesh, report.merge), surface, spacing);
+    const auto directed = two_sided_distance(boundary_of(mesh, report.merge), surface, spacing);
+    const double distance = (std::max)(directed.first, directed.second);
     if(make_mesh_3_distance < 0) { // make_mesh_3 at the same vertex count, uniform sizing
       namespace P = CGAL::parameters;
       auto with_size = [&](double size) {
@@ -329,7 +338,8 @@ int run(const Options& o)
           with_size, mesh.points.size(), std::cbrt(volume / (0.2 * double(mesh.points.size()))), 0.03);
       Surface_mesh b;
       CGAL::facets_in_complex_3_to_triangle_mesh(r.c3t3, b);
-      make_mesh_3_distance = two_sided_distance(b, surface, spacing);
+      const auto d = two_sided_distance(b, surface, spacing);
+      make_mesh_3_distance = (std::max)(d.first, d.second);
       make_mesh_3_vertices = CGAL::GSM_mesh_optimization::number_of_vertices_in_complex(r.c3t3);
     }
     const double total = field_time + report.particle_time + report.tetrahedra_time + report.merge_time;
@@ -348,7 +358,8 @@ int run(const Options& o)
            << ", \"hex_count_percent\": " << s.hexahedron_count_percent << ", \"sj_min\": " << s.scaled_jacobian_min
            << ", \"sj_mean\": " << s.scaled_jacobian_mean << ", \"verdict_sj_min\": " << s.verdict_scaled_jacobian_min
            << ", \"verdict_sj_mean\": " << s.verdict_scaled_jacobian_mean
-           << ", \"alignment_error_mean_deg\": " << s.alignment_error_mean << ", \"hausdorff\": " << distance
+           << ", \"alignment_error_mean_deg\": " << s.alignment_error_mean << ", \"hausdorff\": " << distance << ", \"hausdorff_mesh_to_surface\": " << directed.first
+           << ", \"hausdorff_surface_to_mesh\": " << directed.second
            << ", \"hausdorff_make_mesh_3\": " << make_mesh_3_distance << ", \"make_mesh_3_vertices\": " << make_mesh_3_vertices
            << ", \"hausdorff_ratio\": " << ratio << ", \"n_inverted\": " << s.number_of_inverted_cells
            << ", \"n_nonconforming\": " << s.number_of_nonconforming_faces
@@ -382,8 +393,8 @@ int run(const Options& o)
   std::printf("merging (last): candidates %.2f s, selection %.2f s; %zu hexahedron, %zu prism, %zu pyramid candidates\n",
               report.merge.candidate_time, report.merge.selection_time, report.merge.number_of_hexahedron_candidates,
               report.merge.number_of_prism_candidates, report.merge.number_of_pyramid_candidates);
-  std::printf("tets: %zu free particles projected, %zu flips to the field's Delaunay\n",
-              report.number_of_projected_particles, report.number_of_metric_flips);
+  std::printf("tets: %zu free particles projected, %zu boundary points added, %zu flips to the field's Delaunay\n",
+              report.number_of_projected_particles, report.number_of_boundary_points, report.number_of_metric_flips);
   std::printf("make_mesh_3 at %zu vertices: boundary distance %.5g (hd0)\n", make_mesh_3_vertices, make_mesh_3_distance);
   return 0;
 }

@@ -9,6 +9,7 @@
 // - tets Delaunay in the field's space: the metric flips turn the Euclidean Delaunay tets of
 //   a stretched grid, which cross its boxes, into tets that merge; make_hex_dominant_mesh_3 on
 //   a warped cube with a shear field gives hexahedra only;
+// - the boundary refinement brings the tets' boundary closer to a sphere;
 // - bad inputs throw.
 
 #include <CGAL/make_hex_dominant_mesh_3.h>
@@ -18,6 +19,9 @@
 #include <CGAL/Hex_dominant_meshing/internal/Metric_Delaunay_flips.h>
 #include <CGAL/GSM_mesh_optimization/internal/Triangulation_complex.h>
 
+#include <CGAL/AABB_face_graph_triangle_primitive.h>
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
 #include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
 #include <CGAL/Mesh_complex_3_in_triangulation_3.h>
 #include <CGAL/Mesh_triangulation_3.h>
@@ -540,6 +544,52 @@ void test_make_hex_dominant_mesh_on_warped_cube()
   CHECK(s.scaled_jacobian_min > 0.9);
 }
 
+// the largest distance from the tets' boundary facets (corners, edge midpoints, centroids) to
+// the surface
+double boundary_facet_distance(const Cube_c3t3& c3t3, const Surface_mesh& surface)
+{
+  typedef CGAL::AABB_face_graph_triangle_primitive<Surface_mesh> Primitive;
+  CGAL::AABB_tree<CGAL::AABB_traits<K, Primitive>> tree(faces(surface).first, faces(surface).second, surface);
+  double d2 = 0;
+  for(auto f = c3t3.facets_in_complex_begin(); f != c3t3.facets_in_complex_end(); ++f) {
+    std::array<Point_3, 3> p;
+    for(int k = 0; k < 3; ++k) p[std::size_t(k)] = f->first->vertex((f->second + k + 1) & 3)->point().point();
+    for(const Point_3& x : {CGAL::centroid(p[0], p[1], p[2]), CGAL::midpoint(p[0], p[1]), CGAL::midpoint(p[1], p[2]),
+                            CGAL::midpoint(p[2], p[0])})
+      d2 = (std::max)(d2, tree.squared_distance(x));
+  }
+  return std::sqrt(d2);
+}
+
+// the boundary refinement of section 4.4.2 on a sphere: surface points are added where the
+// tets' facets cut the sphere too deep, and the facets come closer to it
+void test_boundary_refinement()
+{
+  Surface_mesh surface;
+  CHECK(CGAL::IO::read_polygon_mesh(std::string(VVM_DATA_DIR) + "/sphere966.off", surface));
+  Cube_domain domain(surface);
+  double distance[2] = {0, 0};
+  for(int refine = 0; refine < 2; ++refine) {
+    HDM::Hex_dominant_report report;
+    Cube_c3t3 tets;
+    const double threshold = refine ? 0.5 * distance[0] : 0.;
+    const Mesh mesh = CGAL::make_hex_dominant_mesh_3<Cube_c3t3>(
+        domain, Constant_field(), TLM::parameters::edge_length(2.5, HDM::parameters::boundary_distance(threshold,
+            HDM::parameters::hex_dominant_report(&report, HDM::parameters::tetrahedral_mesh(&tets,
+                TLM::parameters::number_of_threads(2, CGAL::parameters::random_seed(2u)))))));
+    distance[refine] = boundary_facet_distance(tets, surface);
+    const HDM::Hex_dominant_statistics s = HDM::hex_dominant_statistics(mesh, {}, &report.merge);
+    std::cout << "sphere of radius 10, l* 2.5, boundary distance " << threshold << ": " << report.number_of_boundary_points
+              << " surface points added, facets within " << distance[refine] << " of the sphere; " << s.number_of_hexahedra
+              << " hex, H_vol " << s.hexahedron_volume_percent << "%\n";
+    CHECK(s.number_of_inverted_cells == 0 && s.number_of_nonconforming_faces == 0);
+    CHECK((report.number_of_boundary_points > 0) == (refine == 1));
+  }
+  CHECK(distance[1] < 0.75 * distance[0]);
+  CHECK(throws([&] { CGAL::make_hex_dominant_mesh_3<Cube_c3t3>(domain, Constant_field(), HDM::parameters::boundary_distance(-1.)); }));
+  CHECK(throws([&] { CGAL::make_hex_dominant_mesh_3<Cube_c3t3>(domain, Constant_field(), HDM::parameters::boundary_distance(std::nan(""))); }));
+}
+
 void test_bad_input()
 {
   std::vector<Point_3> p = {Point_3(0, 0, 0), Point_3(1, 0, 0), Point_3(0, 1, 0), Point_3(0, 0, 1)};
@@ -564,6 +614,7 @@ int main()
   test_make_hex_dominant_mesh_on_cube();
   test_metric_flips();
   test_make_hex_dominant_mesh_on_warped_cube();
+  test_boundary_refinement();
   test_bad_input();
   if(failures) std::cerr << failures << " checks failed\n";
   else std::cout << "all checks passed\n";

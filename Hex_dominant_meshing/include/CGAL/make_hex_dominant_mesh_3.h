@@ -10,6 +10,7 @@
 
 #include <CGAL/Hex_dominant_mesh_3.h>
 #include <CGAL/Hex_dominant_meshing/parameters.h>
+#include <CGAL/Hex_dominant_meshing/internal/Boundary_refinement.h>
 #include <CGAL/Hex_dominant_meshing/internal/Metric_Delaunay_flips.h>
 #include <CGAL/tets_to_hex_dominant.h>
 #include <CGAL/make_lattice_mesh_3.h>
@@ -44,6 +45,7 @@ struct Hex_dominant_report
   std::size_t number_of_particles = 0;
   double edge_length = 0;            ///< \f$ l^* \f$
   std::size_t number_of_projected_particles = 0; ///< free particles the tets left on the boundary, put onto it
+  std::size_t number_of_boundary_points = 0; ///< surface points added by the boundary refinement
   std::size_t number_of_metric_flips = 0; ///< flips that made the tets Delaunay in the field's space
   double particle_time = 0;          ///< seconds
   double tetrahedra_time = 0;        ///< seconds
@@ -108,6 +110,10 @@ make_hex_dominant_mesh(const MeshDomain& domain, const FrameField& field,
   bool isotropic = true;
   const Eigen::Matrix3d delaunay_map = mean_metric_root(field, pd.particles.points, isotropic);
   TLM_internal::connect_lattice_particles(c3t3, domain, pd, r.number_of_projected_particles, delaunay_map);
+  const double boundary_distance = choose_parameter(get_parameter(np, HDM::internal_np::boundary_distance), 0.);
+  if(boundary_distance > 0 && c3t3.number_of_cells_in_complex() > 0)
+    r.number_of_boundary_points =
+        refine_boundary(c3t3, domain, pd, boundary_distance, delaunay_map, r.number_of_projected_particles);
   if(c3t3.number_of_cells_in_complex() == 0)
     throw std::invalid_argument("make_hex_dominant_mesh_3: the particles make no cell inside the domain "
                                 "(edge length too large for it?)");
@@ -141,6 +147,9 @@ Tetrahedral_lattice_meshing::internal::Lattice_request read_hex_dominant_request
     throw std::invalid_argument("make_hex_dominant_mesh_3: hexahedra come from the cubic lattice (no BCC or FCC)");
   const double q_bound = choose_parameter(get_parameter(np, internal_np::quality_bound), 0.5);
   if(!(q_bound >= 0 && q_bound <= 1)) throw std::invalid_argument("make_hex_dominant_mesh_3: the quality bound must be in [0, 1]");
+  const double boundary_distance = choose_parameter(get_parameter(np, internal_np::boundary_distance), 0.);
+  if(!(boundary_distance >= 0) || !std::isfinite(boundary_distance))
+    throw std::invalid_argument("make_hex_dominant_mesh_3: the boundary distance must be non-negative and finite");
   return TLM::internal::read_lattice_request(TLM::parameters::lattice(TLM::Lattice_type::CUBIC, np));
 }
 
@@ -173,6 +182,15 @@ Tetrahedral_lattice_meshing::internal::Lattice_request read_hex_dominant_request
  *   \cgalParamNEnd
  *   \cgalParamNBegin{the named parameters of `tets_to_hex_dominant()`}
  *     \cgalParamDescription{`quality_bound`, `cell_types`}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{Hex_dominant_meshing::parameters::boundary_distance}
+ *     \cgalParamDescription{the boundary refinement of dissertation 4.4.2: where the tets'
+ *       boundary is farther than this from the domain's surface, or the surface (its samples,
+ *       sharp edges) farther than this from the tets' boundary, surface points are added to
+ *       the particles (kept a third of the boundary edge length apart) and the particles are
+ *       connected again, for at most four rounds. The cells at the added points are seldom
+ *       hexahedra: the refinement trades hexahedra near the boundary for a closer boundary}
+ *     \cgalParamType{`double`} \cgalParamDefault{0: no refinement}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{Hex_dominant_meshing::parameters::stage_visitor}
  *     \cgalParamDescription{called after each stage with the stage and its seconds}

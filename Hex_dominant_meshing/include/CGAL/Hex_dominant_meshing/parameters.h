@@ -39,6 +39,7 @@ enum merge_report_t { merge_report };
 enum hex_dominant_report_t { hex_dominant_report };
 enum stage_visitor_t { stage_visitor };
 enum tetrahedral_mesh_t { tetrahedral_mesh };
+enum boundary_distance_t { boundary_distance };
 
 } // namespace internal_np
 
@@ -58,6 +59,9 @@ CGAL_VVM_ADD_NAMED_PARAMETER(hex_dominant_report)
 CGAL_VVM_ADD_NAMED_PARAMETER(stage_visitor)
 /// `C3T3*`: receives the tets `make_hex_dominant_mesh_3()` merged (default: none)
 CGAL_VVM_ADD_NAMED_PARAMETER(tetrahedral_mesh)
+/// `double`: the boundary refinement's threshold on the distance between the tets' boundary and
+/// the domain's surface (default 0: no refinement)
+CGAL_VVM_ADD_NAMED_PARAMETER(boundary_distance)
 
 } // namespace parameters
 } // namespace Hex_dominant_meshing
