@@ -35,11 +35,12 @@
 #include <CGAL/Real_timer.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/Tetrahedral_lattice_meshing/internal/Domain_cross_field.h>
-#include <CGAL/facets_in_complex_3_to_triangle_mesh.h>
 #include <CGAL/make_hex_dominant_mesh_3.h>
 
 #include <tbb/global_control.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -209,7 +210,17 @@ Field make_field(const Options& o, const Domain& domain, double volume)
   return Field([cross](const Point_3& p) { return cross->T(p); });
 }
 
-// the boundary of the merged tets (the cells' boundary, each quad as its two tet facets) as a triangle mesh
+// triangles as a mesh of separate faces (own vertices each): a mesh's boundary may be non-manifold
+// (two parts touching at an edge), and Surface_mesh would refuse such facets
+Surface_mesh triangle_soup_mesh(const std::vector<std::array<Point_3, 3>>& triangles)
+{
+  Surface_mesh sm;
+  for(const auto& t : triangles)
+    sm.add_face(sm.add_vertex(t[0]), sm.add_vertex(t[1]), sm.add_vertex(t[2]));
+  return sm;
+}
+
+// the boundary of the merged tets (the cells' boundary, each quad as its two tet facets)
 Surface_mesh boundary_of(const Mesh& mesh, const HDM::Hex_dominant_merge_report& report)
 {
   std::map<std::array<std::size_t, 3>, std::pair<int, std::array<std::size_t, 3>>> facets; // sorted -> (count, outward)
@@ -222,20 +233,25 @@ Surface_mesh boundary_of(const Mesh& mesh, const HDM::Hex_dominant_merge_report&
       ++e.first;
       e.second = outward;
     }
-  Surface_mesh sm;
-  std::map<std::size_t, Surface_mesh::Vertex_index> vertex;
-  auto V = [&](std::size_t i) {
-    auto it = vertex.find(i);
-    if(it != vertex.end()) return it->second;
-    return vertex[i] = sm.add_vertex(mesh.points[i]);
-  };
-  std::size_t dropped = 0;
+  std::vector<std::array<Point_3, 3>> triangles;
   for(const auto& f : facets)
-    if(f.second.first == 1 &&
-       sm.add_face(V(f.second.second[0]), V(f.second.second[1]), V(f.second.second[2])) == Surface_mesh::null_face())
-      ++dropped;
-  if(dropped) std::cerr << "compare_hex_dominant: " << dropped << " boundary facets left out of the distance (not manifold)\n";
-  return sm;
+    if(f.second.first == 1)
+      triangles.push_back({{mesh.points[f.second.second[0]], mesh.points[f.second.second[1]], mesh.points[f.second.second[2]]}});
+  return triangle_soup_mesh(triangles);
+}
+
+// the surface facets of a complex
+Surface_mesh boundary_of(const C3T3& c3t3)
+{
+  std::vector<std::array<Point_3, 3>> triangles;
+  auto point = c3t3.triangulation().geom_traits().construct_point_3_object();
+  for(auto f = c3t3.facets_in_complex_begin(); f != c3t3.facets_in_complex_end(); ++f) {
+    std::array<Point_3, 3> t;
+    for(int k = 0; k < 3; ++k)
+      t[std::size_t(k)] = point(f->first->vertex((f->second + 1 + k) % 4)->point());
+    triangles.push_back(t);
+  }
+  return triangle_soup_mesh(triangles);
 }
 
 // the Hausdorff distance from a to b, and from b to a
@@ -336,9 +352,7 @@ int run(const Options& o)
       };
       const auto r = CGAL::GSM_mesh_optimization::mesh_with_vertex_count(
           with_size, mesh.points.size(), std::cbrt(volume / (0.2 * double(mesh.points.size()))), 0.03);
-      Surface_mesh b;
-      CGAL::facets_in_complex_3_to_triangle_mesh(r.c3t3, b);
-      const auto d = two_sided_distance(b, surface, spacing);
+      const auto d = two_sided_distance(boundary_of(r.c3t3), surface, spacing);
       make_mesh_3_distance = (std::max)(d.first, d.second);
       make_mesh_3_vertices = CGAL::GSM_mesh_optimization::number_of_vertices_in_complex(r.c3t3);
     }
@@ -367,25 +381,17 @@ int run(const Options& o)
            << ", \"time_tets_s\": " << report.tetrahedra_time << ", \"time_merge_s\": " << report.merge_time
            << ", \"time_s\": " << total << "}\n";
     if(!o.out_dir.empty() && q == bounds.front()) {
-      std::vector<double> sj, verdict, type;
+      std::vector<double> verdict; // Verdict's hexahedron measure: 0 for the other cells
       for(const auto& c : mesh.cells) {
-        type.push_back(double(int(c.type)));
-        if(c.type != CGAL::Hex_dominant_cell_type::HEXAHEDRON) {
-          sj.push_back(0);
-          verdict.push_back(0);
-          continue;
-        }
         std::array<Eigen::Vector3d, 8> p;
-        Eigen::Vector3d g = Eigen::Vector3d::Zero();
-        for(std::size_t k = 0; k < 8; ++k) {
+        for(std::size_t k = 0; k < c.size(); ++k) {
           const Point_3& x = mesh.points[c.vertices[k]];
-          g += (p[k] = Eigen::Vector3d(x.x(), x.y(), x.z()));
+          p[k] = Eigen::Vector3d(x.x(), x.y(), x.z());
         }
-        sj.push_back(HDM::hexahedron_scaled_jacobian(p, B(g / 8.)));
-        verdict.push_back(HDM::verdict_hexahedron_scaled_jacobian(p));
+        verdict.push_back(c.type == CGAL::Hex_dominant_cell_type::HEXAHEDRON ? HDM::verdict_hexahedron_scaled_jacobian(p) : 0.);
       }
       const std::string base = o.out_dir + "/" + model + "_hexdom";
-      HDM::IO::write_VTU(base + ".vtu", mesh, {{"scaled_jacobian", sj}, {"verdict_scaled_jacobian", verdict}});
+      HDM::IO::write_VTU(base + ".vtu", mesh, {{"scaled_jacobian", HDM::cell_scaled_jacobians(mesh, B)}, {"verdict_scaled_jacobian", verdict}});
       HDM::IO::write_MSH(base + ".msh", mesh);
       HDM::IO::write_MEDIT(base + ".mesh", mesh);
     }

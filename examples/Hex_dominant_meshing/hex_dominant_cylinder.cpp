@@ -27,7 +27,6 @@
 #include <CGAL/make_hex_dominant_mesh_3.h>
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -74,32 +73,6 @@ Surface_mesh tube(double r_in, double r_out, double height, int n)
   return sm;
 }
 
-// the smallest corner scaled Jacobian of a cell, its edges mapped by B: eq. 4.5 for a
-// hexahedron; the same over the corners where three edges meet for the other cells
-double cell_scaled_jacobian(const Mesh& mesh, const Mesh::Cell& c, const Eigen::Matrix3d& B)
-{
-  static const std::array<std::array<int, 3>, 4> tet = {{{{1, 2, 3}}, {{2, 0, 3}}, {{0, 1, 3}}, {{0, 2, 1}}}};
-  std::array<Eigen::Vector3d, 8> p;
-  for(std::size_t k = 0; k < c.size(); ++k) {
-    const K::Point_3& q = mesh.points[c.vertices[k]];
-    p[k] = Eigen::Vector3d(q.x(), q.y(), q.z());
-  }
-  auto min_over = [&](const auto& neighbors) {
-    double m = 1;
-    for(std::size_t k = 0; k < neighbors.size(); ++k) {
-      auto edge = [&](int j) { return Eigen::Vector3d(B * (p[std::size_t(neighbors[k][std::size_t(j)])] - p[k])); };
-      m = (std::min)(m, HDM::corner_scaled_jacobian(edge(0), edge(1), edge(2)));
-    }
-    return m;
-  };
-  switch(c.type) {
-    case CGAL::Hex_dominant_cell_type::HEXAHEDRON: return min_over(HDM::hexahedron_corner_neighbors());
-    case CGAL::Hex_dominant_cell_type::PRISM: return min_over(HDM::prism_corner_neighbors());
-    case CGAL::Hex_dominant_cell_type::PYRAMID: return min_over(HDM::pyramid_corner_neighbors());
-    default: return min_over(tet);
-  }
-}
-
 // meshes `domain` aligned with `field`, prints one line of measures, writes DIR/NAME.vtu
 // and returns the measures
 template <class FrameField>
@@ -121,14 +94,7 @@ HDM::Hex_dominant_statistics mesh_tube(const std::string& name, const Domain& do
               s.number_of_nonconforming_faces, r.particle_time + r.tetrahedra_time + r.merge_time, r.particle_time,
               r.tetrahedra_time, r.merge_time);
 
-  std::vector<double> sj;
-  sj.reserve(mesh.number_of_cells());
-  for(const auto& c : mesh.cells) {
-    Eigen::Vector3d g = Eigen::Vector3d::Zero();
-    for(std::size_t v : c) g += Eigen::Vector3d(mesh.points[v].x(), mesh.points[v].y(), mesh.points[v].z());
-    sj.push_back(cell_scaled_jacobian(mesh, c, B(g / double(c.size()))));
-  }
-  HDM::IO::write_VTU(dir + "/" + name + ".vtu", mesh, {{"scaled_jacobian", sj}});
+  HDM::IO::write_VTU(dir + "/" + name + ".vtu", mesh, {{"scaled_jacobian", HDM::cell_scaled_jacobians(mesh, B)}});
   return s;
 }
 

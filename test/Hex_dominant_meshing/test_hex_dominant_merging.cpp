@@ -3,7 +3,8 @@
 // - every triangulation of a (perturbed) cube, 5, 6 and 7 tets, all classes up to the
 //   cube's symmetries, merges into one hexahedron with the cube's corner order;
 // - hand-made prisms and pyramids are found;
-// - the Delaunay tets of a perfect cubic grid merge into hexahedra only;
+// - the Delaunay tets of a perfect cubic grid merge into hexahedra only; per-cell scaled
+//   Jacobians of hand-computed cells;
 // - on random Delaunay tets the cells partition the tets, are positively oriented, conform,
 //   and conflicting candidates are never both kept;
 // - tets Delaunay in the field's space: the metric flips turn the Euclidean Delaunay tets of
@@ -15,6 +16,7 @@
 #include <CGAL/make_hex_dominant_mesh_3.h>
 #include <CGAL/tets_to_hex_dominant.h>
 #include <CGAL/Frame_fields/Constant_frame_field_3.h>
+#include <CGAL/Hex_dominant_meshing/cell_quality.h>
 #include <CGAL/Hex_dominant_meshing/hex_dominant_statistics.h>
 #include <CGAL/Hex_dominant_meshing/internal/Metric_Delaunay_flips.h>
 #include <CGAL/GSM_mesh_optimization/internal/Triangulation_complex.h>
@@ -371,6 +373,40 @@ void test_cubic_grid()
   CHECK(mirrored.number_of_cells(CGAL::Hex_dominant_cell_type::HEXAHEDRON) == std::size_t((n - 1) * (n - 1) * (n - 1)));
 }
 
+// cell_scaled_jacobians on hand-computed cells: the unit cube with its top shifted by (1, 0, 0)
+// has corner edges (1,0,0), (0,1,0), (1,0,1): 1/sqrt(2), and 1 in the space of the field that
+// undoes the shear; the corner tetrahedron (0, e1, e2, e3): 1/2 at the corners other than 0
+void test_cell_scaled_jacobians()
+{
+  Mesh mesh;
+  for(int i = 0; i < 8; ++i) {
+    const int x = (i == 1 || i == 2 || i == 5 || i == 6), y = (i == 2 || i == 3 || i == 6 || i == 7), z = i >= 4;
+    mesh.points.emplace_back(x + z, y, z); // VTK order, top shifted
+  }
+  Mesh::Cell hex;
+  hex.type = CGAL::Hex_dominant_cell_type::HEXAHEDRON;
+  for(std::size_t k = 0; k < 8; ++k) hex.vertices[k] = k;
+  mesh.cells.push_back(hex);
+  Mesh::Cell tet;
+  tet.type = CGAL::Hex_dominant_cell_type::TETRAHEDRON;
+  mesh.points.emplace_back(10, 0, 0);
+  mesh.points.emplace_back(11, 0, 0);
+  mesh.points.emplace_back(10, 1, 0);
+  mesh.points.emplace_back(10, 0, 1);
+  for(std::size_t k = 0; k < 4; ++k) tet.vertices[k] = 8 + k;
+  mesh.cells.push_back(tet);
+  const std::vector<double> euclidean = HDM::cell_scaled_jacobians(mesh);
+  Eigen::Matrix3d unshear = Eigen::Matrix3d::Identity();
+  unshear(0, 2) = -1;
+  const std::vector<double> in_field = HDM::cell_scaled_jacobians(mesh, [&](const Eigen::Vector3d&) { return unshear; });
+  std::cout << "cell scaled Jacobians: sheared hexahedron " << euclidean[0] << ", unsheared " << in_field[0]
+            << ", corner tetrahedron " << euclidean[1] << "\n";
+  CHECK(euclidean.size() == 2 && in_field.size() == 2);
+  CHECK(std::abs(euclidean[0] - std::sqrt(0.5)) < 1e-12);
+  CHECK(std::abs(in_field[0] - 1) < 1e-12);
+  CHECK(std::abs(euclidean[1] - 0.5) < 1e-12);
+}
+
 void test_random_tets()
 {
   CGAL::Random random(5);
@@ -609,6 +645,7 @@ int main()
   test_seven_tet_hexahedra();
   test_prism_and_pyramid();
   test_cubic_grid();
+  test_cell_scaled_jacobians();
   test_random_tets();
   test_nonconforming_detected();
   test_make_hex_dominant_mesh_on_cube();

@@ -21,7 +21,9 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <functional>
 #include <limits>
+#include <vector>
 
 namespace CGAL {
 namespace Hex_dominant_meshing {
@@ -251,6 +253,48 @@ double minimum_corner_jacobian(const Hex_dominant_mesh_3<Point_3>& mesh, const t
       }
       return m;
   }
+}
+
+/*!
+ * \ingroup PkgHexDominantMeshingRef
+ * returns the scaled Jacobian of each cell of `mesh` in the frame field's space, for a
+ * per-cell output such as `IO::write_VTU()`: the smallest corner value of eq. 4.5,
+ * \f$ \det[B e_1, B e_2, B e_3] / (|B e_1| |B e_2| |B e_3|) \f$, over the corners where three
+ * edges meet (every corner of a hexahedron, prism or tetrahedron, the base corners of a
+ * pyramid), `B` the frame inverse at the cell's centroid (empty: the identity, the Euclidean
+ * measure). A left-handed `B` counts as its negation, as in `hex_dominant_statistics()`.
+ */
+template <class Point_3>
+std::vector<double> cell_scaled_jacobians(const Hex_dominant_mesh_3<Point_3>& mesh,
+                                          const std::function<Eigen::Matrix3d(const Eigen::Vector3d&)>& B = {})
+{
+  static const std::array<std::array<int, 3>, 4> tetrahedron_corner_neighbors = {
+      {{{1, 2, 3}}, {{2, 0, 3}}, {{0, 1, 3}}, {{0, 2, 1}}}};
+  std::vector<double> sj;
+  sj.reserve(mesh.number_of_cells());
+  for(const auto& c : mesh.cells) {
+    std::array<Eigen::Vector3d, 8> p;
+    Eigen::Vector3d g = Eigen::Vector3d::Zero();
+    for(std::size_t k = 0; k < c.size(); ++k) {
+      const Point_3& q = mesh.points[c.vertices[k]];
+      g += (p[k] = Eigen::Vector3d(CGAL::to_double(q.x()), CGAL::to_double(q.y()), CGAL::to_double(q.z())));
+    }
+    Eigen::Matrix3d b = B ? B(g / double(c.size())) : Eigen::Matrix3d(Eigen::Matrix3d::Identity());
+    if(b.determinant() < 0) b = -b;
+    switch(c.type) {
+      case Hex_dominant_cell_type::HEXAHEDRON:
+        sj.push_back(internal::min_corner_scaled_jacobian(p, hexahedron_corner_neighbors(), b));
+        break;
+      case Hex_dominant_cell_type::PRISM:
+        sj.push_back(internal::min_corner_scaled_jacobian(p, prism_corner_neighbors(), b));
+        break;
+      case Hex_dominant_cell_type::PYRAMID:
+        sj.push_back(internal::min_corner_scaled_jacobian(p, pyramid_corner_neighbors(), b));
+        break;
+      default: sj.push_back(internal::min_corner_scaled_jacobian(p, tetrahedron_corner_neighbors, b));
+    }
+  }
+  return sj;
 }
 
 } // namespace Hex_dominant_meshing

@@ -8,8 +8,13 @@
 // Each round freezes the neighbour pairs (within R, widened by the field's
 // largest stretch) and the frame of each pair's midpoint, so that L-BFGS
 // minimizes a smooth function with its exact gradient; both are renewed at
-// the next round. Pairs are evaluated in parallel and summed in a fixed
-// order, so the result does not depend on the number of threads.
+// the next round. L-BFGS moves each particle in the imagined space of its own
+// frame (frozen for the round too), where the energy is isotropic: in
+// Euclidean coordinates a stretched or graded field would make the problem
+// ill-conditioned (curvatures ~ B^T B), and the particles of the stretched
+// axes or the coarse parts would hardly move in a round's few iterations.
+// Pairs are evaluated in parallel and summed in a fixed order, so the result
+// does not depend on the number of threads.
 
 #ifndef CGAL_TETRAHEDRAL_LATTICE_MESHING_INTERNAL_PARTICLE_SYSTEM_H
 #define CGAL_TETRAHEDRAL_LATTICE_MESHING_INTERNAL_PARTICLE_SYSTEM_H
@@ -183,9 +188,10 @@ public:
 
   /*
    * E = sum_i sum_{j != i} E_ij = 2 sum_pairs E_ij over the frozen pairs, at positions
-   * x = p / l*, and its gradient with respect to x (projected on each particle's freedom).
+   * x = p / l*, and its gradient with respect to x (projected on each particle's freedom
+   * if `constrain`).
    */
-  double energy_and_gradient(const Eigen::VectorXd& x, Eigen::VectorXd& grad) const
+  double energy_and_gradient(const Eigen::VectorXd& x, Eigen::VectorXd& grad, bool constrain = true) const
   {
     std::vector<double> e(pairs_.size());
     std::vector<Eigen::Vector3d> g(pairs_.size());
@@ -204,7 +210,7 @@ public:
         if(k > 0) gi += g[std::size_t(k - 1)];
         else gi -= g[std::size_t(-k - 1)];
       }
-      grad.segment<3>(3 * i) = 2. * constrained(i, gi);
+      grad.segment<3>(3 * i) = 2. * (constrain ? constrained(i, gi) : gi);
     });
     double sum = 0;
     for(double v : e) sum += v;
@@ -214,10 +220,17 @@ public:
   /// the gradient `g` of particle `i` restricted to its freedom
   Eigen::Vector3d constrained(std::size_t i, const Eigen::Vector3d& g) const
   {
+    return constrained(i, g, directions[i]);
+  }
+
+  /// the gradient `g` restricted to the freedom of particle `i`, whose normal (BOUNDARY) or
+  /// tangent (SHARP_EDGE) is the unit vector `d` in the coordinates of `g`
+  Eigen::Vector3d constrained(std::size_t i, const Eigen::Vector3d& g, const Eigen::Vector3d& d) const
+  {
     switch(kinds[i]) {
       case Particle_kind::CORNER: return Eigen::Vector3d::Zero();
-      case Particle_kind::SHARP_EDGE: return g.dot(directions[i]) * directions[i];
-      case Particle_kind::BOUNDARY: return g - g.dot(directions[i]) * directions[i];
+      case Particle_kind::SHARP_EDGE: return g.dot(d) * d;
+      case Particle_kind::BOUNDARY: return g - g.dot(d) * d;
       default: return g;
     }
   }
@@ -238,46 +251,88 @@ public:
 
   /*
    * One L-BFGS run (Alg. 2's loop) on the frozen pairs: stops when the gradient's RMS per
-   * particle is under eps_g, or after max_iterations (0: no bound). A failed line search
-   * ends the run at the best point seen.
+   * particle (in the particles' imagined spaces) is under eps_g, after max_iterations (0: no
+   * bound), or before a particle moves farther than l* from where it started. A failed line
+   * search ends the run at the best point seen.
    */
   Round_result lbfgs_round(double eps_g, int max_iterations)
   {
     build_pairs();
     Round_result r;
     if(points.empty()) return r;
-    Eigen::VectorXd x = positions();
-    Eigen::VectorXd best_x = x;
+    // the variables: y_i = B_i x_i, B_i the frame's inverse at particle i; a normal n becomes
+    // T_i^T n, a tangent t becomes B_i t (a move dy_i keeps n . T_i dy_i = 0, or along t)
+    const std::size_t n = points.size();
+    std::vector<Eigen::Matrix3d> T_i(n), B_i(n);
+    std::vector<Eigen::Vector3d> d_i(n);
+    parallel_for_each_index(n, [&](std::size_t i) {
+      T_i[i] = T(points[i]);
+      B_i[i] = T_i[i].inverse();
+      const Eigen::Vector3d d = kinds[i] == Particle_kind::SHARP_EDGE ? Eigen::Vector3d(B_i[i] * directions[i])
+                                                                       : Eigen::Vector3d(T_i[i].transpose() * directions[i]);
+      d_i[i] = d.norm() > 0 ? Eigen::Vector3d(d.normalized()) : d;
+    });
+    const Eigen::VectorXd x0 = positions();
+    Eigen::VectorXd y(x0.size());
+    parallel_for_each_index(n, [&](std::size_t i) { y.segment<3>(3 * i) = B_i[i] * x0.segment<3>(3 * i); });
+    const Eigen::VectorXd y0 = y;
+    auto to_x = [&](const Eigen::VectorXd& v) { // x0 + T dy: a particle that did not move stays put exactly
+      Eigen::VectorXd x(v.size());
+      parallel_for_each_index(n, [&](std::size_t i) {
+        x.segment<3>(3 * i) = x0.segment<3>(3 * i) + T_i[i] * (v.segment<3>(3 * i) - y0.segment<3>(3 * i));
+      });
+      return x;
+    };
+    // the frozen pairs and frames hold near the round's start only: the run ends when a
+    // particle would go farther than max_move (in its imagined space, units of l*)
+    struct Moved_too_far {};
+    const double max_move = 1.;
+    Eigen::VectorXd best_y = y;
     double best_e = std::numeric_limits<double>::infinity();
-    auto f = [&](const Eigen::VectorXd& y, Eigen::VectorXd& grad) {
-      const double e = energy_and_gradient(y, grad);
+    auto f = [&](const Eigen::VectorXd& v, Eigen::VectorXd& grad, bool check = true) {
+      if(check) {
+        std::vector<char> far(n, 0);
+        parallel_for_each_index(n, [&](std::size_t i) {
+          far[i] = (v.segment<3>(3 * i) - y0.segment<3>(3 * i)).squaredNorm() > max_move * max_move;
+        });
+        if(std::find(far.begin(), far.end(), 1) != far.end()) throw Moved_too_far();
+      }
+      Eigen::VectorXd gx;
+      const double e = energy_and_gradient(to_x(v), gx, false);
+      grad.resize(v.size());
+      parallel_for_each_index(n, [&](std::size_t i) {
+        grad.segment<3>(3 * i) = constrained(i, T_i[i].transpose() * gx.segment<3>(3 * i), d_i[i]);
+      });
       if(e < best_e) {
         best_e = e;
-        best_x = y;
+        best_y = v;
       }
       return e;
     };
     LBFGSpp::LBFGSParam<double> param;
-    param.epsilon = eps_g * std::sqrt(double(points.size()));
+    param.epsilon = eps_g * std::sqrt(double(n));
     param.epsilon_rel = 0;
     param.max_iterations = max_iterations;
     param.max_linesearch = 30;
     LBFGSpp::LBFGSSolver<double> solver(param);
-    double fx = 0;
+    double fy = 0;
     try {
-      r.iterations = solver.minimize(f, x, fx);
+      r.iterations = solver.minimize(f, y, fy);
     } catch(const std::runtime_error&) { // a line search that cannot progress: keep the best point
       r.iterations = max_iterations;
     } catch(const std::logic_error&) {
       r.iterations = max_iterations;
+    } catch(const Moved_too_far&) {
+      r.iterations = max_iterations;
     }
-    for(std::size_t i = 0; i < points.size(); ++i) {
+    const Eigen::VectorXd best_x = to_x(best_y);
+    for(std::size_t i = 0; i < n; ++i) {
       const Eigen::Vector3d p = best_x.template segment<3>(3 * i) * l_;
       moved[i] += (p - points[i]).norm();
       points[i] = p;
     }
     Eigen::VectorXd grad;
-    r.energy = energy_and_gradient(best_x, grad);
+    r.energy = f(best_y, grad, false);
     r.gradient_norm = grad.norm();
     return r;
   }
