@@ -12,8 +12,7 @@
 // usage: hex_dominant_cube [OUTPUT_DIR [SIZE [FIELDS]]]
 //        SIZE: a number of particles (an integer >= 1, default 800 per field) or,
 //        if it is under 1 or has a fractional part, the edge length l*
-//        FIELDS: the letters of the fields to mesh (default abcdef; d takes minutes, the others
-//        about a second each)
+//        FIELDS: the letters of the fields to mesh (default abcdef; about a second each at 800)
 
 #include <CGAL/make_mesh_3.h> // first: it brings the TBB headers CGAL's other Mesh_3 headers need
 
@@ -139,8 +138,8 @@ int main(int argc, char** argv)
   if(wanted('a')) ok &= mesh_cube("a_identity", cube(-1, 1), 8, FF::identity_frame_field<K>(), size, dir);
   if(wanted('b')) ok &= mesh_cube("b_stretch", cube(-1, 1), 8, FF::constant_stretch_frame_field<K>(), size, dir);
   if(wanted('c')) ok &= mesh_cube("c_linear_scale", cube(-1, 1), 8, linear_scale, size, dir);
-  // Fig. 4.8's T (densest at x = 0.6); Fig. 4.15d prints its inverse (see the header). Slow (minutes):
-  // the particle engine samples the boundary at the field's smallest spacing, 0.0125 l*, found at x = 0.6.
+  // Fig. 4.8's T (densest at x = 0.6, its x axis 80 times shorter there); Fig. 4.15d prints its
+  // inverse (see the header)
   if(wanted('d'))
     ok &= mesh_cube("d_single_dir", cube(0.1, 1.1), 1, FF::single_direction_anisotropy_frame_field<K>(), size, dir);
   const auto shear_y = FF::shear_y_frame_field<K>(), shear_yz = FF::shear_yz_frame_field<K>();

@@ -153,8 +153,9 @@ Particles_in_domain<MeshDomain> lattice_particles(const MeshDomain& domain, cons
     }
   }
   const double l0 = edge_length_from_box(domain, Bc.determinant(), r);
+  // the boundary sampled at the mean spacing, as accurate as the shortest axis needs
   Eigen::JacobiSVD<Eigen::Matrix3d> svd(Tc);
-  const double spacing = l0 * svd.singularValues().minCoeff();
+  const double spacing = l0 * std::cbrt(std::abs(Tc.determinant())), finest = l0 * svd.singularValues().minCoeff();
 
   Particles_in_domain<MeshDomain> out;
   CGAL::Real_timer timer;
@@ -163,7 +164,7 @@ Particles_in_domain<MeshDomain> lattice_particles(const MeshDomain& domain, cons
   if(r.threads > 0)
     thread_limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
                                                          std::size_t(r.threads));
-  out.boundary = std::make_unique<Domain_boundary<MeshDomain, K>>(domain, spacing);
+  out.boundary = std::make_unique<Domain_boundary<MeshDomain, K>>(domain, spacing, finest);
   const Domain_measures measures = domain_measures<Domain_boundary<MeshDomain, K>, FrameField, Point_3>(*out.boundary, field);
   if(!(measures.volume > 0)) fail("the domain is empty (no volume)");
   const double l = r.has_length ? r.edge_length : lattice_edge_length(r.lattice, measures, r.number_of_particles);
@@ -209,7 +210,8 @@ default_frame_field(const MeshDomain& domain,
  * slide along them, particles on the boundary slide on it.
  *
  * The domain's boundary, feature curves and corners are those `make_mesh_3()` finds for it
- * (sampled at about the particle spacing, chordal error 2% of it), so any `MeshDomain_3`
+ * (sampled at about the mean particle spacing, with a chordal error of 2% of the spacing along
+ * the frame's shortest axis), so any `MeshDomain_3`
  * works: polyhedral (with features), implicit, labelled (several subdomains: their
  * interfaces are boundaries too). The lattice's edge length \f$ l^* \f$ is measured in the
  * imagined space, where the field's frames \f$ T \f$ are the identity: particle \f$ p_i \f$'s

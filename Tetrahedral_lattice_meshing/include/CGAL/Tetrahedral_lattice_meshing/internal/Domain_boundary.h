@@ -90,15 +90,18 @@ public:
   };
 
   /// samples the boundary of `domain` with Mesh_3 at a resolution fit for particles
-  /// `spacing` apart (facets about that size, chordal error 2% of it)
-  Domain_boundary(const MeshDomain& domain, double spacing) : domain_(domain)
+  /// `spacing` apart (facets about that size), with a chordal error of 2% of the smallest
+  /// spacing, `finest_spacing` (an anisotropic field's shortest axis): the surface is as
+  /// accurate as the densest particles need, without facets that small on flat parts
+  Domain_boundary(const MeshDomain& domain, double spacing, double finest_spacing = 0) : domain_(domain)
   {
+    if(!(finest_spacing > 0) || finest_spacing > spacing) finest_spacing = spacing;
     namespace P = CGAL::parameters;
     typedef CGAL::Mesh_criteria_3<typename C3T3::Triangulation> Criteria;
     const CGAL::Random saved = CGAL::get_default_random();
     CGAL::get_default_random() = CGAL::Random(0); // the boundary must not depend on the process's history
     Criteria criteria(P::edge_size = spacing, P::facet_angle = 25, P::facet_size = spacing,
-                      P::facet_distance = 0.02 * spacing, P::cell_radius_edge_ratio = 3,
+                      P::facet_distance = 0.02 * finest_spacing, P::cell_radius_edge_ratio = 3,
                       P::cell_size = 2 * spacing);
     C3T3 c3t3 = CGAL::make_mesh_3<C3T3>(domain, criteria, P::no_perturb(), P::no_exude());
     CGAL::get_default_random() = saved;
