@@ -9,13 +9,16 @@
 //   and conflicting candidates are never both kept;
 // - tets Delaunay in the field's space: the metric flips turn the Euclidean Delaunay tets of
 //   a stretched grid, which cross its boxes, into tets that merge; make_hex_dominant_mesh_3 on
-//   a warped cube with a shear field gives hexahedra only;
+//   a warped cube with a shear field, and on a cube with Fig. 4.8's field (cells 80 times
+//   thinner along x than across), gives hexahedra only;
+// - a flat tet on a hexahedron's boundary quad is taken in by it;
 // - the boundary refinement brings the tets' boundary closer to a sphere;
 // - bad inputs throw.
 
 #include <CGAL/make_hex_dominant_mesh_3.h>
 #include <CGAL/tets_to_hex_dominant.h>
 #include <CGAL/Frame_fields/Constant_frame_field_3.h>
+#include <CGAL/Frame_fields/dissertation_frame_fields.h>
 #include <CGAL/Hex_dominant_meshing/cell_quality.h>
 #include <CGAL/Hex_dominant_meshing/hex_dominant_statistics.h>
 #include <CGAL/Hex_dominant_meshing/internal/Metric_Delaunay_flips.h>
@@ -580,6 +583,71 @@ void test_make_hex_dominant_mesh_on_warped_cube()
   CHECK(s.scaled_jacobian_min > 0.9);
 }
 
+// a face of the cube bent outward along its diagonal 1-2, split by the hexahedron's tets
+// along 0-3: Delaunay puts the flat tet 0123 on it, outside the six tets. The hexahedron
+// takes it in; a tet on the face that is not flat stays a tet.
+void test_flat_tet_on_boundary_quad()
+{
+  for(double bend : {0.02, 0.4}) {
+    std::vector<Point_3> corners;
+    for(int c = 0; c < 8; ++c) corners.emplace_back(c & 1, (c >> 1) & 1, (c >> 2) & 1);
+    corners[1] = Point_3(1, 0, -bend);
+    corners[2] = Point_3(0, 1, -bend);
+    const std::vector<std::array<std::size_t, 4>> tets = {
+        {{0, 1, 3, 7}}, {{0, 1, 5, 7}}, {{0, 2, 3, 7}}, {{0, 2, 6, 7}}, {{0, 4, 5, 7}}, {{0, 4, 6, 7}}, {{0, 1, 2, 3}}};
+    HDM::Hex_dominant_merge_report report;
+    const Mesh mesh = CGAL::tets_to_hex_dominant(corners, tets, {}, HDM::parameters::quality_bound(0., HDM::parameters::merge_report(&report)));
+    std::vector<int> corner_of_point(8);
+    for(int c = 0; c < 8; ++c) corner_of_point[std::size_t(c)] = c;
+    const HDM::Hex_dominant_statistics s = HDM::hex_dominant_statistics(mesh, nullptr, &report);
+    std::vector<int> uses(tets.size(), 0);
+    for(const auto& c : report.cell_tets)
+      for(std::size_t t : c) ++uses[t];
+    std::cout << "flat tet on a boundary quad (bend " << bend << "): " << mesh.cells.size() << " cells, "
+              << report.number_of_flat_tets_taken_in << " flat tet taken in\n";
+    CHECK(mesh.cells[0].type == CGAL::Hex_dominant_cell_type::HEXAHEDRON &&
+          has_cube_corner_order(mesh.cells[0], corner_of_point));
+    CHECK(s.number_of_inverted_cells == 0 && s.number_of_nonconforming_faces == 0);
+    CHECK(std::count(uses.begin(), uses.end(), 1) == std::ptrdiff_t(tets.size())); // a partition of the tets
+    if(bend < 0.1)
+      CHECK(mesh.cells.size() == 1 && report.cell_tets[0].size() == 7 && report.number_of_flat_tets_taken_in == 1);
+    else
+      CHECK(mesh.cells.size() == 2 && report.cell_tets[0].size() == 6 && report.number_of_flat_tets_taken_in == 0);
+  }
+}
+
+// make_hex_dominant_mesh_3 on [0.1, 1.1]^3 with Fig. 4.8's field T = diag(1.0125 -
+// exp(-|x - 0.6|), 1, 1) (Fig. 4.15d): near x = 0.6 the lattice's cells are 80 times thinner
+// along x than across, flat in Euclidean space. Only in the field's space are the boundary
+// cells not flat; measured in Euclidean space, those along the cube's edges were peeled off
+// as flat surface cells (95.8% of hexahedron volume at 800 particles)
+void test_make_hex_dominant_mesh_on_graded_cube()
+{
+  Surface_mesh surface;
+  CHECK(CGAL::IO::read_polygon_mesh(std::string(VVM_DATA_DIR) + "/cube.off", surface));
+  for(auto v : surface.vertices()) {
+    const Point_3& p = surface.point(v); // [-1, 1]^3 -> [0.1, 1.1]^3
+    surface.point(v) = Point_3(0.6 + 0.5 * p.x(), 0.6 + 0.5 * p.y(), 0.6 + 0.5 * p.z());
+  }
+  Cube_domain domain(surface);
+  domain.detect_features(60);
+  HDM::Hex_dominant_report report;
+  const auto field = CGAL::Frame_fields::single_direction_anisotropy_frame_field<K>();
+  const Mesh mesh = CGAL::make_hex_dominant_mesh_3<Cube_c3t3>(
+      domain, field, TLM::parameters::number_of_particles(800, HDM::parameters::hex_dominant_report(&report,
+          TLM::parameters::number_of_threads(2, CGAL::parameters::random_seed(1u)))));
+  const HDM::Hex_dominant_statistics s = HDM::hex_dominant_statistics(
+      mesh, [&](const Eigen::Vector3d& x) { return Eigen::Matrix3d(field.B(Point_3(x[0], x[1], x[2]))); }, &report.merge);
+  std::cout << "make_hex_dominant_mesh_3, cube with Fig. 4.8's field, 800 particles asked: " << report.number_of_particles
+            << " particles -> " << s.number_of_hexahedra << " hex, " << mesh.cells.size() - s.number_of_hexahedra
+            << " other cells; H_vol " << s.hexahedron_volume_percent << "%, SJ min " << s.scaled_jacobian_min
+            << ", volume " << s.total_volume << "\n";
+  CHECK(s.number_of_inverted_cells == 0 && s.number_of_nonconforming_faces == 0);
+  CHECK(std::abs(s.total_volume - 1) < 1e-9);
+  CHECK(s.hexahedron_volume_percent > 99.99);
+  CHECK(s.scaled_jacobian_min > 0.9);
+}
+
 // the largest distance from the tets' boundary facets (corners, edge midpoints, centroids) to
 // the surface
 double boundary_facet_distance(const Cube_c3t3& c3t3, const Surface_mesh& surface)
@@ -651,6 +719,8 @@ int main()
   test_make_hex_dominant_mesh_on_cube();
   test_metric_flips();
   test_make_hex_dominant_mesh_on_warped_cube();
+  test_make_hex_dominant_mesh_on_graded_cube();
+  test_flat_tet_on_boundary_quad();
   test_boundary_refinement();
   test_bad_input();
   if(failures) std::cerr << failures << " checks failed\n";

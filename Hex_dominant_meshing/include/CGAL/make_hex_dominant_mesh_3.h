@@ -109,19 +109,20 @@ make_hex_dominant_mesh(const MeshDomain& domain, const FrameField& field,
   C3T3 c3t3;
   bool isotropic = true;
   const Eigen::Matrix3d delaunay_map = mean_metric_root(field, pd.particles.points, isotropic);
-  TLM_internal::connect_lattice_particles(c3t3, domain, pd, r.number_of_projected_particles, delaunay_map);
+  const TLM_internal::Frame_inverse_function B = [&field](const Eigen::Vector3d& x) {
+    return Eigen::Matrix3d(field.B(typename FrameField::Point_3(x[0], x[1], x[2])));
+  };
+  TLM_internal::connect_lattice_particles(c3t3, domain, pd, r.number_of_projected_particles, delaunay_map, B);
   const double boundary_distance = choose_parameter(get_parameter(np, HDM::internal_np::boundary_distance), 0.);
   if(boundary_distance > 0 && c3t3.number_of_cells_in_complex() > 0)
     r.number_of_boundary_points =
-        refine_boundary(c3t3, domain, pd, boundary_distance, delaunay_map, r.number_of_projected_particles);
+        refine_boundary(c3t3, domain, pd, boundary_distance, delaunay_map, B, r.number_of_projected_particles);
   if(c3t3.number_of_cells_in_complex() == 0)
     throw std::invalid_argument("make_hex_dominant_mesh_3: the particles make no cell inside the domain "
                                 "(edge length too large for it?)");
   // the cells of the lattice are cubes in the field's space: their tets must be Delaunay there
   if(!isotropic) {
-    Metric_Delaunay_flips<C3T3> flips(c3t3, [&field](const Eigen::Vector3d& x) {
-      return Eigen::Matrix3d(field.B(typename FrameField::Point_3(x[0], x[1], x[2])));
-    });
+    Metric_Delaunay_flips<C3T3> flips(c3t3, B);
     r.number_of_metric_flips = flips.run(20 * c3t3.number_of_cells_in_complex());
   }
   r.tetrahedra_time = timer.time();

@@ -44,6 +44,8 @@ struct Hex_dominant_merge_report
   std::size_t number_of_hexahedron_candidates = 0;
   std::size_t number_of_prism_candidates = 0;
   std::size_t number_of_pyramid_candidates = 0;
+  /// flat tets left on one cell's quad (boundary side) and taken in by it
+  std::size_t number_of_flat_tets_taken_in = 0;
   /// per output cell, the input tets it is made of (indices in the order of the input's
   /// `finite_cells()` or `cells_in_complex()`)
   std::vector<std::vector<std::size_t>> cell_tets;
@@ -165,6 +167,7 @@ Hex_dominant_mesh_3<Point_3> merge_tets(Tetrahedral_adjacency& mesh, std::vector
     number_of_candidates[std::size_t(kind)] = candidates.size();
     selection.select(candidates);
   }
+  const std::size_t flat_tets_taken_in = selection.take_in_flat_tets();
   const Selection& s = selection.result();
 
   typedef typename Hex_dominant_mesh_3<Point_3>::Cell Cell;
@@ -194,6 +197,7 @@ Hex_dominant_mesh_3<Point_3> merge_tets(Tetrahedral_adjacency& mesh, std::vector
     report->number_of_hexahedron_candidates = number_of_candidates[0];
     report->number_of_prism_candidates = number_of_candidates[1];
     report->number_of_pyramid_candidates = number_of_candidates[2];
+    report->number_of_flat_tets_taken_in = flat_tets_taken_in;
     report->cell_tets = std::move(cell_tets);
     report->tets = mesh.tets;
     report->candidate_time = candidate_time;

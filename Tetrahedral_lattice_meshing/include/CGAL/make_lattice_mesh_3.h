@@ -103,9 +103,10 @@ void optimize_lattice_mesh(C3T3& c3t3, const MeshDomain& domain, const FrameFiel
 template <class C3T3, class MeshDomain>
 Complex_report connect_lattice_particles(C3T3& c3t3, const MeshDomain& domain, Particles_in_domain<MeshDomain>& pd,
                                          std::size_t& number_of_projected_particles,
-                                         const Eigen::Matrix3d& delaunay_map = Eigen::Matrix3d::Identity())
+                                         const Eigen::Matrix3d& delaunay_map = Eigen::Matrix3d::Identity(),
+                                         const Frame_inverse_function& frame_inverse = Frame_inverse_function())
 {
-  Complex_report cr = connect_particles(c3t3, domain, *pd.boundary, pd.particles, delaunay_map);
+  Complex_report cr = connect_particles(c3t3, domain, *pd.boundary, pd.particles, delaunay_map, frame_inverse);
   for(int pass = 0; pass < 3 && !cr.exposed_free_particles.empty(); ++pass) {
     for(std::size_t i : cr.exposed_free_particles) {
       auto& p = pd.particles.points[i];
@@ -115,7 +116,7 @@ Complex_report connect_lattice_particles(C3T3& c3t3, const MeshDomain& domain, P
       pd.particles.features[i] = c.feature;
     }
     number_of_projected_particles += cr.exposed_free_particles.size();
-    cr = connect_particles(c3t3, domain, *pd.boundary, pd.particles, delaunay_map);
+    cr = connect_particles(c3t3, domain, *pd.boundary, pd.particles, delaunay_map, frame_inverse);
   }
   return cr;
 }
@@ -146,7 +147,10 @@ C3T3 make_lattice_mesh(const MeshDomain& domain, const FrameField& field, const 
   CGAL::Real_timer timer;
   timer.start();
   C3T3 c3t3;
-  const Complex_report cr = connect_lattice_particles(c3t3, domain, pd, r.number_of_projected_particles);
+  const Complex_report cr = connect_lattice_particles(
+      c3t3, domain, pd, r.number_of_projected_particles, Eigen::Matrix3d::Identity(), [&field](const Eigen::Vector3d& x) {
+        return Eigen::Matrix3d(field.B(typename FrameField::Point_3(x[0], x[1], x[2])));
+      });
   r.number_of_feature_edges = cr.number_of_feature_edges;
   r.number_of_surface_facets = cr.number_of_surface_facets;
   r.connection_time = timer.time();

@@ -34,6 +34,7 @@ template <class C3T3, class MeshDomain>
 std::size_t refine_boundary(C3T3& c3t3, const MeshDomain& domain,
                             Tetrahedral_lattice_meshing::internal::Particles_in_domain<MeshDomain>& pd,
                             double threshold, const Eigen::Matrix3d& delaunay_map,
+                            const Tetrahedral_lattice_meshing::internal::Frame_inverse_function& frame_inverse,
                             std::size_t& number_of_projected_particles, int max_rounds = 4)
 {
   namespace TLM = Tetrahedral_lattice_meshing;
@@ -120,7 +121,7 @@ std::size_t refine_boundary(C3T3& c3t3, const MeshDomain& domain,
         if(far(x)) add(x);
     if(added == 0) break;
     added_total += added;
-    TLM::internal::connect_lattice_particles(c3t3, domain, pd, number_of_projected_particles, delaunay_map);
+    TLM::internal::connect_lattice_particles(c3t3, domain, pd, number_of_projected_particles, delaunay_map, frame_inverse);
   }
   return added_total;
 }

@@ -9,6 +9,8 @@
 // corners split along the other diagonal are accepted when a flat tet of these
 // four corners lies between (Delaunay leaves one between cells of a nearly
 // regular lattice): the later cell takes it in, and both show the same quad.
+// A flat tet left on one kept quad (on a planar or convex piece of the
+// boundary) is taken in by that cell at the end.
 
 #ifndef CGAL_HEX_DOMINANT_MESHING_INTERNAL_CONFORMING_SELECTION_H
 #define CGAL_HEX_DOMINANT_MESHING_INTERNAL_CONFORMING_SELECTION_H
@@ -90,6 +92,7 @@ public:
         Quad_corners q = mesh.tets[t];
         std::sort(q.begin(), q.end());
         flat_tet_.emplace(q, t);
+        flat_tets_.push_back(t);
       }
   }
 
@@ -127,7 +130,10 @@ public:
       for(int k = 0; k < c.number_of_tets; ++k) s_.owner[c.tets[std::size_t(k)]] = id;
       for(std::size_t t : take_in) s_.owner[t] = id;
       for(const Quad_face& q : quads) {
-        if(!diagonal_of_.count(q.corners)) diagonal_of_[q.corners] = q.diagonal;
+        if(!diagonal_of_.count(q.corners)) {
+          diagonal_of_[q.corners] = q.diagonal;
+          cell_of_quad_[q.corners] = id;
+        }
         for(const Triangle_key& h : q.halves) half_of_[h] = q.corners;
       }
       s_.cells.push_back(c);
@@ -136,14 +142,55 @@ public:
     }
   }
 
+  /*
+   * After the last round: a flat tet still free whose corners are a kept quad's lies on that
+   * quad, against the cell's two triangles (the only other tet on them); the cell takes it in
+   * and its quad shows the flat tet's other diagonal, toward the boundary or the tets beyond.
+   * Returns how many.
+   */
+  std::size_t take_in_flat_tets()
+  {
+    std::size_t count = 0;
+    for(std::size_t t : flat_tets_) {
+      if(s_.owner[t] != no_index) continue;
+      Quad_corners q = mesh_.tets[t];
+      std::sort(q.begin(), q.end());
+      auto c = cell_of_quad_.find(q);
+      if(c == cell_of_quad_.end()) continue;
+      const std::size_t id = c->second;
+      if(mesh_.subdomain[t] != mesh_.subdomain[s_.cells[id].tets[0]]) continue;
+      Quad_diagonal& d = diagonal_of_[q];
+      Quad_diagonal other{};
+      int k = 0;
+      for(std::size_t v : q)
+        if(v != d[0] && v != d[1]) other[std::size_t(k++)] = v;
+      // the flat tet's other two triangles must not be halves of another kept quad
+      const std::array<Triangle_key, 2> halves = {{triangle_key(other[0], other[1], d[0]), triangle_key(other[0], other[1], d[1])}};
+      bool ok = true;
+      for(const Triangle_key& h : halves) {
+        auto it = half_of_.find(h);
+        if(it != half_of_.end() && it->second != q) ok = false;
+      }
+      if(!ok) continue;
+      for(const Triangle_key& h : halves) half_of_[h] = q;
+      d = other;
+      s_.owner[t] = id;
+      s_.taken_in[id].push_back(t);
+      ++count;
+    }
+    return count;
+  }
+
   const Selection& result() const { return s_; }
 
 private:
   const Tetrahedral_adjacency& mesh_;
   Selection s_;
   std::unordered_map<Quad_corners, std::size_t, Array_hash> flat_tet_;
+  std::vector<std::size_t> flat_tets_; // the same, in index order
   std::unordered_map<Triangle_key, Quad_corners, Array_hash> half_of_;    // a kept quad's triangles
   std::unordered_map<Quad_corners, Quad_diagonal, Array_hash> diagonal_of_; // a kept quad's diagonal
+  std::unordered_map<Quad_corners, std::size_t, Array_hash> cell_of_quad_;  // the first kept cell of a quad
 };
 
 } // namespace internal

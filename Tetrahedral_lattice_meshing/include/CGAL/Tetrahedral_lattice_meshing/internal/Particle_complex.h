@@ -30,6 +30,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <functional>
 #include <map>
 #include <numeric>
 #include <set>
@@ -51,6 +52,9 @@ struct Complex_report
   std::size_t number_of_isolated_cells = 0;     ///< cells without a neighbour in the complex, left outside
   std::vector<std::size_t> exposed_free_particles; ///< free particles on a surface facet
 };
+
+/// the frame inverse \f$ B(x) \f$ of a frame field; empty for the identity
+typedef std::function<Eigen::Matrix3d(const Eigen::Vector3d&)> Frame_inverse_function;
 
 /// true if the tetrahedron's smallest height is under a tenth of its longest edge
 inline bool is_flat(const std::array<Eigen::Vector3d, 4>& p)
@@ -128,11 +132,14 @@ void insert_mapped_Delaunay(Tr& tr, const std::vector<Bare_point>& points, const
 
 /// `delaunay_map`: the tets are the Delaunay tets of the particles mapped by this linear map
 /// (with a positive determinant; e.g. the square root of the field's mean metric, so that the
-/// cells of a sheared or stretched lattice are not crossed), back at their own places
+/// cells of a sheared or stretched lattice are not crossed), back at their own places.
+/// `frame_inverse`: the field's \f$ B \f$, in whose space a boundary cell is flat or not (a
+/// lattice cell stretched 80 times along x is flat in Euclidean space, not in the field's).
 template <class C3T3, class MeshDomain, class Boundary, class Point_3>
 Complex_report connect_particles(C3T3& c3t3, const MeshDomain& domain, const Boundary& boundary,
                                  const Lattice_particles_3<Point_3>& particles,
-                                 const Eigen::Matrix3d& delaunay_map = Eigen::Matrix3d::Identity())
+                                 const Eigen::Matrix3d& delaunay_map = Eigen::Matrix3d::Identity(),
+                                 const Frame_inverse_function& frame_inverse = Frame_inverse_function())
 {
   typedef typename C3T3::Triangulation Tr;
   typedef typename Tr::Vertex_handle Vertex_handle;
@@ -190,6 +197,13 @@ Complex_report connect_particles(C3T3& c3t3, const MeshDomain& domain, const Bou
     auto it = particle_of.find(v);
     return it == particle_of.end() ? Particle_kind::FREE : particles.kinds[it->second];
   };
+  auto is_flat_in_field = [&](std::array<Eigen::Vector3d, 4> p) {
+    if(frame_inverse) {
+      const Eigen::Matrix3d B = frame_inverse(0.25 * (p[0] + p[1] + p[2] + p[3]));
+      for(Eigen::Vector3d& q : p) q = B * q;
+    }
+    return is_flat(p);
+  };
   // cells: the subdomain at the centroid, except the flat cells of boundary particles lying
   // on the surface (four particles of a planar patch), whose centroid is on it too
   const auto is_in = domain.is_in_domain_object();
@@ -201,7 +215,7 @@ Complex_report connect_particles(C3T3& c3t3, const MeshDomain& domain, const Bou
       all_boundary = all_boundary && kind(c->vertex(k)) != Particle_kind::FREE;
     }
     const Eigen::Vector3d g = 0.25 * (p[0] + p[1] + p[2] + p[3]);
-    if(all_boundary && is_flat(p)) {
+    if(all_boundary && is_flat_in_field(p)) {
       double longest = 0;
       for(int i = 0; i < 4; ++i)
         for(int j = i + 1; j < 4; ++j) longest = (std::max)(longest, (p[i] - p[j]).norm());
@@ -229,7 +243,7 @@ Complex_report connect_particles(C3T3& c3t3, const MeshDomain& domain, const Bou
       if(!all_boundary || !on_boundary) continue;
       std::array<Eigen::Vector3d, 4> p;
       for(int k = 0; k < 4; ++k) p[k] = eig(c->vertex(k));
-      if(is_flat(p)) peel.push_back(c);
+      if(is_flat_in_field(p)) peel.push_back(c);
     }
     for(const Cell_handle& c : peel) c3t3.remove_from_complex(c);
     report.number_of_peeled_cells += peel.size();
