@@ -21,7 +21,7 @@
 #include <CGAL/Frame_fields/dissertation_frame_fields.h>
 #include <CGAL/Hex_dominant_meshing/cell_quality.h>
 #include <CGAL/Hex_dominant_meshing/hex_dominant_statistics.h>
-#include <CGAL/Hex_dominant_meshing/internal/Metric_Delaunay_flips.h>
+#include <CGAL/Tetrahedral_lattice_meshing/internal/Metric_Delaunay_flips.h>
 #include <CGAL/GSM_mesh_optimization/internal/Triangulation_complex.h>
 
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
@@ -526,7 +526,7 @@ void test_metric_flips()
   };
   const std::size_t before = hexahedra();
   CGAL::GSM_mesh_optimization::internal::Triangulation_complex<Delaunay> complex(tr);
-  HDM::internal::Metric_Delaunay_flips<decltype(complex)> flips(complex, [](const Eigen::Vector3d&) {
+  TLM::internal::Metric_Delaunay_flips<decltype(complex)> flips(complex, [](const Eigen::Vector3d&) {
     return Eigen::Matrix3d(Eigen::Vector3d(0.25, 1, 1).asDiagonal());
   });
   const std::size_t done = flips.run(100000);

@@ -787,6 +787,61 @@ void test_lattice_mesh_on_cube()
 }
 
 // ---------------------------------------------------------------------------------------------
+// 6b. A stretched field: the lattice is regular in the field's space only, and so are the
+// tets: Delaunay in the metric B^T B (the Euclidean Delaunay tets of an FCC lattice three
+// times longer along x are slivers there).
+
+void test_lattice_mesh_in_stretched_field()
+{
+  const Cube_domain& domain = *cube().domain;
+  Eigen::Matrix3d T = Eigen::Matrix3d::Identity();
+  T(0, 0) = 3;
+  const Constant_field field(T);
+  const Eigen::Matrix3d B = T.inverse();
+  TLM::Lattice_mesh_report report;
+  const Cube_c3t3 c3t3 = CGAL::make_lattice_mesh_3<Cube_c3t3>(domain, field,
+      TLM::parameters::lattice(TLM::Lattice_type::FCC, TLM::parameters::edge_length(0.25,
+          TLM::parameters::mesh_optimization(TLM::Lattice_mesh_optimization::NONE,
+              TLM::parameters::mesh_report(&report, CGAL::parameters::random_seed(3u))))));
+  const Cube_tr& tr = c3t3.triangulation();
+  const auto cp = tr.geom_traits().construct_point_3_object();
+  auto mapped = [&](Cube_tr::Vertex_handle v) {
+    const Point p = cp(tr.point(v));
+    return Eigen::Vector3d(B * Eigen::Vector3d(p.x(), p.y(), p.z()));
+  };
+  // every facet between two cells of the complex is Delaunay in the field's space
+  std::size_t facets = 0, violations = 0, not_positive = 0;
+  for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c) {
+    std::array<Eigen::Vector3d, 4> x;
+    for(int k = 0; k < 4; ++k) x[std::size_t(k)] = mapped(c->vertex(k));
+    not_positive += !((x[1] - x[0]).dot((x[2] - x[0]).cross(x[3] - x[0])) > 0);
+    for(int i = 0; i < 4; ++i) {
+      const auto n = c->neighbor(i);
+      if(!c3t3.is_in_complex(n) || !(Cube_tr::Cell_handle(c) < n)) continue;
+      ++facets;
+      const Eigen::Vector3d t = mapped(n->vertex(n->index(c)));
+      Eigen::Matrix4d lifted;
+      double edge2 = 0;
+      for(int k = 0; k < 4; ++k) {
+        const Eigen::Vector3d y = x[std::size_t(k)] - t;
+        lifted.row(k) << y.transpose(), y.squaredNorm();
+        edge2 = std::max(edge2, y.squaredNorm());
+      }
+      violations += -lifted.determinant() > 1e-9 * edge2 * edge2 * std::sqrt(edge2); // t inside the sphere
+    }
+  }
+  const auto q = CGAL::GSM_mesh_optimization::mesh_quality_statistics(c3t3, [&](const auto&) { return B; });
+  std::cout << "FCC lattice mesh of T = diag(3, 1, 1), l* 0.25: " << report.number_of_particles << " particles, "
+            << c3t3.number_of_cells_in_complex() << " cells, " << facets << " inner facets, " << violations
+            << " not Delaunay in the field's space, " << report.number_of_metric_flips
+            << " metric flips; in the metric: min dihedral " << q.min_dihedral_angle << ", mean min "
+            << q.mean_min_dihedral_angle << "\n";
+  VVM_CHECK(c3t3.number_of_cells_in_complex() > 100);
+  VVM_CHECK_EQUAL(not_positive, std::size_t(0));
+  VVM_CHECK_EQUAL(violations, std::size_t(0));
+}
+
+// ---------------------------------------------------------------------------------------------
 // 7. Bad inputs: std::invalid_argument naming the problem, before any work.
 
 void test_bad_inputs()
@@ -852,6 +907,7 @@ int main(int argc, char** argv)
       {"particle_kinds_on_sphere", test_particle_kinds_on_sphere},
       {"thread_independence", test_thread_independence},
       {"lattice_mesh_on_cube", test_lattice_mesh_on_cube},
+      {"lattice_mesh_in_stretched_field", test_lattice_mesh_in_stretched_field},
       {"bad_inputs", test_bad_inputs}};
   for(const auto& t : tests) {
     if(std::string(t.first).find(only) == std::string::npos) continue;

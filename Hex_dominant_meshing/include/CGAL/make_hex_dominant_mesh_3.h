@@ -11,7 +11,7 @@
 #include <CGAL/Hex_dominant_mesh_3.h>
 #include <CGAL/Hex_dominant_meshing/parameters.h>
 #include <CGAL/Hex_dominant_meshing/internal/Boundary_refinement.h>
-#include <CGAL/Hex_dominant_meshing/internal/Metric_Delaunay_flips.h>
+#include <CGAL/Tetrahedral_lattice_meshing/internal/Metric_Delaunay_flips.h>
 #include <CGAL/tets_to_hex_dominant.h>
 #include <CGAL/make_lattice_mesh_3.h>
 
@@ -55,30 +55,6 @@ struct Hex_dominant_report
 
 namespace internal {
 
-/// the square root of the field's metric \f$ B^T B \f$ averaged over the points (each scaled
-/// by its trace), of determinant 1: the Delaunay tets of the points mapped by it stay inside
-/// the cells of the lattice of a constant field (boxes, parallelepipeds), and the metric flips
-/// have less to do for a varying one. The identity for a field of unit frames (a cross
-/// field), which `isotropic` tells: no flip can change anything then.
-template <class FrameField, class Point_3>
-Eigen::Matrix3d mean_metric_root(const FrameField& field, const std::vector<Point_3>& points, bool& isotropic)
-{
-  auto is_isotropic = [](const Eigen::Vector3d& lambda) { return lambda.maxCoeff() < (1 + 1e-3) * lambda.minCoeff(); };
-  Eigen::Matrix3d M = Eigen::Matrix3d::Zero();
-  isotropic = true;
-  for(const Point_3& p : points) {
-    const Eigen::Matrix3d B = field.B(typename FrameField::Point_3(p.x(), p.y(), p.z()));
-    const Eigen::Matrix3d m = B.transpose() * B;
-    M += m / m.trace();
-    if(isotropic) isotropic = is_isotropic(Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(m, Eigen::EigenvaluesOnly).eigenvalues());
-  }
-  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(M);
-  const Eigen::Vector3d lambda = eigen.eigenvalues();
-  if(!(lambda.minCoeff() > 1e-6 * lambda.maxCoeff()) || is_isotropic(lambda)) return Eigen::Matrix3d::Identity();
-  const Eigen::Matrix3d root = eigen.operatorSqrt();
-  return root / std::cbrt(root.determinant());
-}
-
 template <class C3T3, class MeshDomain, class FrameField, class NamedParameters>
 Hex_dominant_mesh_3<typename MeshDomain::R::Point_3>
 make_hex_dominant_mesh(const MeshDomain& domain, const FrameField& field,
@@ -108,7 +84,7 @@ make_hex_dominant_mesh(const MeshDomain& domain, const FrameField& field,
   timer.start();
   C3T3 c3t3;
   bool isotropic = true;
-  const Eigen::Matrix3d delaunay_map = mean_metric_root(field, pd.particles.points, isotropic);
+  const Eigen::Matrix3d delaunay_map = TLM_internal::mean_metric_root(field, pd.particles.points, isotropic);
   const TLM_internal::Frame_inverse_function B = [&field](const Eigen::Vector3d& x) {
     return Eigen::Matrix3d(field.B(typename FrameField::Point_3(x[0], x[1], x[2])));
   };
@@ -122,7 +98,7 @@ make_hex_dominant_mesh(const MeshDomain& domain, const FrameField& field,
                                 "(edge length too large for it?)");
   // the cells of the lattice are cubes in the field's space: their tets must be Delaunay there
   if(!isotropic) {
-    Metric_Delaunay_flips<C3T3> flips(c3t3, B);
+    TLM_internal::Metric_Delaunay_flips<C3T3> flips(c3t3, B);
     r.number_of_metric_flips = flips.run(20 * c3t3.number_of_cells_in_complex());
   }
   r.tetrahedra_time = timer.time();

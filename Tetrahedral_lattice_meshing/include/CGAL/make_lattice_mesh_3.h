@@ -9,6 +9,7 @@
 
 #include <CGAL/lattice_particles_3.h>
 #include <CGAL/gsm_optimize_mesh_3.h>
+#include <CGAL/Tetrahedral_lattice_meshing/internal/Metric_Delaunay_flips.h>
 #include <CGAL/Tetrahedral_lattice_meshing/internal/Particle_complex.h>
 
 #include <CGAL/Named_function_parameters.h>
@@ -50,6 +51,7 @@ struct Lattice_mesh_report
   std::size_t number_of_feature_edges = 0;
   std::size_t number_of_surface_facets = 0;
   std::size_t number_of_projected_particles = 0; ///< free particles the complex left on its boundary, put onto the surface
+  std::size_t number_of_metric_flips = 0; ///< flips that made the tets Delaunay in the field's space (anisotropic fields)
   bool metric_is_anisotropic = false; ///< the last stage ran in the metric \f$ B^T B \f$ (the frames are not all rotations)
 };
 
@@ -147,16 +149,21 @@ C3T3 make_lattice_mesh(const MeshDomain& domain, const FrameField& field, const 
   CGAL::Real_timer timer;
   timer.start();
   C3T3 c3t3;
-  const Complex_report cr = connect_lattice_particles(
-      c3t3, domain, pd, r.number_of_projected_particles, Eigen::Matrix3d::Identity(), [&field](const Eigen::Vector3d& x) {
-        return Eigen::Matrix3d(field.B(typename FrameField::Point_3(x[0], x[1], x[2])));
-      });
-  r.number_of_feature_edges = cr.number_of_feature_edges;
-  r.number_of_surface_facets = cr.number_of_surface_facets;
-  r.connection_time = timer.time();
+  // the lattice is regular in the field's space: its tets are Delaunay there, not in Euclidean
+  // space (where those of a stretched lattice are slivers in the field's metric)
+  bool isotropic = true;
+  const Eigen::Matrix3d delaunay_map = mean_metric_root(field, pd.particles.points, isotropic);
+  const Frame_inverse_function B = [&field](const Eigen::Vector3d& x) {
+    return Eigen::Matrix3d(field.B(typename FrameField::Point_3(x[0], x[1], x[2])));
+  };
+  const Complex_report cr = connect_lattice_particles(c3t3, domain, pd, r.number_of_projected_particles, delaunay_map, B);
   if(c3t3.number_of_cells_in_complex() == 0)
     throw std::invalid_argument("make_lattice_mesh_3: the particles make no cell inside the domain "
                                 "(edge length too large for it?)");
+  if(!isotropic) r.number_of_metric_flips = Metric_Delaunay_flips<C3T3>(c3t3, B).run(20 * c3t3.number_of_cells_in_complex());
+  r.number_of_feature_edges = cr.number_of_feature_edges;
+  r.number_of_surface_facets = cr.number_of_surface_facets;
+  r.connection_time = timer.time();
   const double time_limit = request.options.time_limit;
   const double left = time_limit > 0 ? (std::max)(1., time_limit - r.particle_time - r.connection_time) : 0.;
   optimize_lattice_mesh(c3t3, domain, field, stage, request.threads, left, r);

@@ -218,8 +218,16 @@ protected:
 
   void account(double old_sum, double new_sum, int cell_difference)
   {
+    const double before = sum_;
     sum_ += new_sum - old_sum;
     count_ = std::size_t(std::ptrdiff_t(count_) + cell_difference);
+    // cells of nearly zero volume have energies so large that removing them leaves only the
+    // rounding error of the running sum (even a negative one): sum again
+    if(!(sum_ > 1e-6 * before)) {
+      const std::pair<double, std::size_t> total = energy_.total();
+      sum_ = total.first;
+      count_ = total.second;
+    }
   }
 
   const Energy& energy_;

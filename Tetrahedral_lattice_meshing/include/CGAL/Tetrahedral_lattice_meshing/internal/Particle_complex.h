@@ -25,6 +25,7 @@
 #include <CGAL/spatial_sort.h>
 
 #include <Eigen/Core>
+#include <Eigen/Eigenvalues>
 
 #include <algorithm>
 #include <array>
@@ -69,6 +70,30 @@ inline bool is_flat(const std::array<Eigen::Vector3d, 4>& p)
   }
   // smallest height = 3 V / largest face area = volume6 / (2 area) = volume6 / largest_face
   return !(largest_face > 0) || volume6 / largest_face < 0.1 * longest;
+}
+
+/// the square root of the field's metric \f$ B^T B \f$ averaged over the points (each scaled
+/// by its trace), of determinant 1: the Delaunay tets of the points mapped by it stay inside
+/// the cells of the lattice of a constant field (boxes, parallelepipeds), and the metric flips
+/// have less to do for a varying one. The identity for a field of unit frames (a cross
+/// field), which `isotropic` tells: no flip can change anything then.
+template <class FrameField, class Point_3>
+Eigen::Matrix3d mean_metric_root(const FrameField& field, const std::vector<Point_3>& points, bool& isotropic)
+{
+  auto is_isotropic = [](const Eigen::Vector3d& lambda) { return lambda.maxCoeff() < (1 + 1e-3) * lambda.minCoeff(); };
+  Eigen::Matrix3d M = Eigen::Matrix3d::Zero();
+  isotropic = true;
+  for(const Point_3& p : points) {
+    const Eigen::Matrix3d B = field.B(typename FrameField::Point_3(p.x(), p.y(), p.z()));
+    const Eigen::Matrix3d m = B.transpose() * B;
+    M += m / m.trace();
+    if(isotropic) isotropic = is_isotropic(Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(m, Eigen::EigenvaluesOnly).eigenvalues());
+  }
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(M);
+  const Eigen::Vector3d lambda = eigen.eigenvalues();
+  if(!(lambda.minCoeff() > 1e-6 * lambda.maxCoeff()) || is_isotropic(lambda)) return Eigen::Matrix3d::Identity();
+  const Eigen::Matrix3d root = eigen.operatorSqrt();
+  return root / std::cbrt(root.determinant());
 }
 
 /// the Delaunay tets of `points` mapped by `map` (positive determinant) put into `tr` with the

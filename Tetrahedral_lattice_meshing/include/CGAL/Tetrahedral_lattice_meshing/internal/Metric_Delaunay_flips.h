@@ -3,18 +3,20 @@
 //
 // Makes the tets of lattice particles Delaunay in the frame field's space by
 // 2-3 and 3-2 flips (Lawson's flips with the in-sphere test of the points
-// mapped by B). A cubic lattice is a grid of cubes in the field's space, whose
-// Delaunay tets stay inside the cubes; in Euclidean space the cells are boxes
-// or parallelepipeds, and the Euclidean Delaunay tets of a slightly perturbed
-// grid of long boxes or sheared cells cross them, so that no hexahedron can be
-// merged there (a sheared 8^3 grid: 366 of 512 hexahedra from the Euclidean
-// tets, 499 after these flips).
+// mapped by B). A lattice is regular in the field's space only: a cubic
+// lattice is a grid of cubes there, whose Delaunay tets stay inside the cubes;
+// in Euclidean space the cells are boxes or parallelepipeds, and the Euclidean
+// Delaunay tets of a slightly perturbed grid of long boxes or sheared cells
+// cross them, so that no hexahedron can be merged there (a sheared 8^3 grid:
+// 366 of 512 hexahedra from the Euclidean tets, 499 after these flips); the
+// Euclidean Delaunay tets of a stretched BCC or FCC lattice are slivers in the
+// field's metric.
 //
 // Only inside one subdomain, never across a surface facet or a feature edge;
 // every flip is checked exactly in Euclidean space (CGAL's Triangulation_3::flip).
 
-#ifndef CGAL_HEX_DOMINANT_MESHING_INTERNAL_METRIC_DELAUNAY_FLIPS_H
-#define CGAL_HEX_DOMINANT_MESHING_INTERNAL_METRIC_DELAUNAY_FLIPS_H
+#ifndef CGAL_TETRAHEDRAL_LATTICE_MESHING_INTERNAL_METRIC_DELAUNAY_FLIPS_H
+#define CGAL_TETRAHEDRAL_LATTICE_MESHING_INTERNAL_METRIC_DELAUNAY_FLIPS_H
 
 #include <CGAL/GSM_mesh_optimization/internal/Cell_replacement.h>
 
@@ -26,7 +28,7 @@
 #include <vector>
 
 namespace CGAL {
-namespace Hex_dominant_meshing {
+namespace Tetrahedral_lattice_meshing {
 namespace internal {
 
 template <class C3T3>
@@ -170,7 +172,7 @@ private:
 };
 
 } // namespace internal
-} // namespace Hex_dominant_meshing
+} // namespace Tetrahedral_lattice_meshing
 } // namespace CGAL
 
-#endif // CGAL_HEX_DOMINANT_MESHING_INTERNAL_METRIC_DELAUNAY_FLIPS_H
+#endif // CGAL_TETRAHEDRAL_LATTICE_MESHING_INTERNAL_METRIC_DELAUNAY_FLIPS_H
