@@ -809,7 +809,8 @@ void test_lattice_mesh_in_stretched_field()
     const Point p = cp(tr.point(v));
     return Eigen::Vector3d(B * Eigen::Vector3d(p.x(), p.y(), p.z()));
   };
-  // every facet between two cells of the complex is Delaunay in the field's space
+  // every facet between two cells of the complex is Delaunay in the field's space (the tie
+  // tolerance relative to the longest distance, looser than the flips' relative to the mean edge)
   std::size_t facets = 0, violations = 0, not_positive = 0;
   for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c) {
     std::array<Eigen::Vector3d, 4> x;
@@ -827,7 +828,9 @@ void test_lattice_mesh_in_stretched_field()
         lifted.row(k) << y.transpose(), y.squaredNorm();
         edge2 = std::max(edge2, y.squaredNorm());
       }
-      violations += -lifted.determinant() > 1e-9 * edge2 * edge2 * std::sqrt(edge2); // t inside the sphere
+      // t inside the sphere, beyond the flips' tie tolerance (points that cospherical have
+      // two Delaunay triangulations, and the flips take the one of the better shapes)
+      violations += -lifted.determinant() > 1e-4 * edge2 * edge2 * std::sqrt(edge2);
     }
   }
   const auto q = CGAL::GSM_mesh_optimization::mesh_quality_statistics(c3t3, [&](const auto&) { return B; });
@@ -839,6 +842,9 @@ void test_lattice_mesh_in_stretched_field()
   VVM_CHECK(c3t3.number_of_cells_in_complex() > 100);
   VVM_CHECK_EQUAL(not_positive, std::size_t(0));
   VVM_CHECK_EQUAL(violations, std::size_t(0));
+  // no flat cell: the FCC octahedra's six corners are cospherical, and a tie left as it is
+  // can keep the flat tet of the octahedron's square (Metric_Delaunay_flips::break_ties_by_shape)
+  VVM_CHECK(q.min_dihedral_angle > 30);
 }
 
 // ---------------------------------------------------------------------------------------------

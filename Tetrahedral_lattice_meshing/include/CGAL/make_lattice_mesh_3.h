@@ -160,7 +160,13 @@ C3T3 make_lattice_mesh(const MeshDomain& domain, const FrameField& field, const 
   if(c3t3.number_of_cells_in_complex() == 0)
     throw std::invalid_argument("make_lattice_mesh_3: the particles make no cell inside the domain "
                                 "(edge length too large for it?)");
-  if(!isotropic) r.number_of_metric_flips = Metric_Delaunay_flips<C3T3>(c3t3, B).run(20 * c3t3.number_of_cells_in_complex());
+  if(!isotropic) {
+    typedef Metric_Delaunay_flips<C3T3> Flips;
+    const std::size_t max_flips = 20 * c3t3.number_of_cells_in_complex();
+    Flips flips(c3t3, B, Flips::Flat_boundary_cells::FORBIDDEN);
+    r.number_of_metric_flips = flips.run(max_flips);
+    r.number_of_metric_flips += flips.break_ties_by_shape(max_flips);
+  }
   r.number_of_feature_edges = cr.number_of_feature_edges;
   r.number_of_surface_facets = cr.number_of_surface_facets;
   r.connection_time = timer.time();
