@@ -175,6 +175,21 @@ Vertex_handle insert(Implicit_tr& tr, double x, double y, double z)
   return tr.insert(Implicit_tr::Point(Bare_point(x, y, z)));
 }
 
+// every edge of the complex's surface facets in exactly two of them
+bool surface_is_closed(const Implicit_c3t3& c3t3)
+{
+  std::map<std::pair<Vertex_handle, Vertex_handle>, int> edge_use;
+  for(auto fit = c3t3.facets_in_complex_begin(); fit != c3t3.facets_in_complex_end(); ++fit)
+    for(int n = 1; n <= 3; ++n) {
+      Vertex_handle u = fit->first->vertex((fit->second + n) & 3), w = fit->first->vertex((fit->second + n % 3 + 1) & 3);
+      if(w < u) std::swap(u, w);
+      ++edge_use[{u, w}];
+    }
+  bool closed = true;
+  for(const auto& e : edge_use) closed = closed && e.second == 2;
+  return closed;
+}
+
 struct Flip_fixture
 {
   Implicit_c3t3 c3t3;
@@ -301,17 +316,39 @@ void test_boundary_peel()
     VVM_CHECK_EQUAL(f.c3t3.number_of_cells_in_complex(), cells - 1);
     VVM_CHECK(!f.c3t3.is_in_complex(cell));
     VVM_CHECK(complex_is_valid(f.c3t3));
-    // the surface of the complex is still closed: every edge of its facets in two of them
-    std::map<std::pair<Vertex_handle, Vertex_handle>, int> edge_use;
-    for(auto fit = f.c3t3.facets_in_complex_begin(); fit != f.c3t3.facets_in_complex_end(); ++fit)
-      for(int n = 1; n <= 3; ++n) {
-        Vertex_handle u = fit->first->vertex((fit->second + n) & 3), w = fit->first->vertex((fit->second + n % 3 + 1) & 3);
-        if(w < u) std::swap(u, w);
-        ++edge_use[{u, w}];
-      }
-    bool closed = true;
-    for(const auto& e : edge_use) closed = closed && e.second == 2;
-    VVM_CHECK(closed);
+    VVM_CHECK(surface_is_closed(f.c3t3));
+  }
+}
+
+void test_boundary_cap_peel()
+{
+  // a flat cap: p just under the facet (b, c, d) of the tet (a, b, c, d), the cell
+  // (p, b, c, d) has three surface facets around p; peeled, (b, c, d) is the surface
+  Flip_fixture f;
+  Implicit_tr& tr = f.c3t3.triangulation();
+  const Vertex_handle a = insert(tr, 0, 0, 1.5), b = insert(tr, 1, 0, 0), c = insert(tr, -0.5, 0.87, 0),
+                      d = insert(tr, -0.5, -0.87, 0), p = insert(tr, 0, 0, -0.03);
+  Implicit_tr::Cell_handle cell;
+  int i, j, k, l;
+  // p is inside the sphere of (a, b, c, d): Delaunay gives the three tets around (a, p)
+  if(tr.is_edge(a, p, cell, i, j)) VVM_CHECK(tr.flip(Implicit_tr::Edge(cell, i, j)));
+  f.start();
+  for(const Vertex_handle& v : tr.finite_vertex_handles()) f.c3t3.set_dimension(v, 2);
+  if(VVM_CHECK(tr.is_cell(p, b, c, d, cell, i, j, k, l))) {
+    int surface = 0;
+    for(int n = 0; n < 4; ++n) surface += f.c3t3.is_in_complex(cell, n) ? 1 : 0;
+    VVM_CHECK_EQUAL(surface, 3);
+    auto flips = f.flips();
+    f.c3t3.set_dimension(p, 1); // on a feature curve: stays
+    VVM_CHECK(!flips.try_peel_boundary_cell(cell));
+    f.c3t3.set_dimension(p, 2);
+    VVM_CHECK(flips.try_peel_boundary_cell(cell));
+    VVM_CHECK_EQUAL(f.c3t3.number_of_cells_in_complex(), std::size_t(1));
+    VVM_CHECK(tr.is_facet(b, c, d, cell, i, j, k) && f.c3t3.is_in_complex(cell, 6 - i - j - k));
+    VVM_CHECK_EQUAL(f.c3t3.number_of_facets_in_complex(), std::size_t(4));
+    VVM_CHECK(complex_is_valid(f.c3t3));
+    VVM_CHECK(surface_is_closed(f.c3t3));
+    VVM_CHECK_CLOSE(f.sum, f.energy.total().first, 1e-9 * f.sum);
   }
 }
 
@@ -1006,6 +1043,7 @@ int main()
   test_flip_2_3_and_3_2();
   test_flip_4_4();
   test_boundary_peel();
+  test_boundary_cap_peel();
   test_polygon_triangulation();
   test_edge_removal();
   test_multi_face_removal();

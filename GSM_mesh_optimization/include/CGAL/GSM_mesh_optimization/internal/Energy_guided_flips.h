@@ -142,7 +142,9 @@ public:
   }
 
   /// the same peel of a cell with two surface facets of one patch, if `accept(f, g)`
-  /// says yes for its two other facets, the new surface facets
+  /// says yes for its two other facets, the new surface facets; or of a cell with three
+  /// (a cap), if `accept(f, f)` says yes for
+  /// its fourth facet
   template <class Accept>
   bool try_peel_boundary_cell(const Cell_handle& c, const Accept& accept)
   {
@@ -161,22 +163,24 @@ private:
   template <class Accept>
   bool peel_boundary_cell(const Cell_handle& c, const Accept& accept)
   {
-    int in[2], out[2], n_in = 0, n_out = 0;
+    int in[3], out[2], n_in = 0, n_out = 0;
     for(int i = 0; i < 4; ++i) {
       if(c3t3_.is_in_complex(c, i)) {
-        if(n_in == 2) return false;
+        if(n_in == 3) return false;
         in[n_in++] = i;
       } else {
         if(n_out == 2) return false;
         out[n_out++] = i;
       }
     }
-    if(n_in != 2 || !c3t3_.is_in_complex(c)) return false;
+    if(n_in < 2 || !c3t3_.is_in_complex(c)) return false;
     const Surface_patch_index patch = c3t3_.surface_patch_index(c, in[0]);
-    if(!(c3t3_.surface_patch_index(c, in[1]) == patch)) return false;
+    for(int k = 1; k < n_in; ++k)
+      if(!(c3t3_.surface_patch_index(c, in[k]) == patch)) return false;
     for(int i = 0; i < 4; ++i)
       for(int j = i + 1; j < 4; ++j)
         if(c3t3_.is_in_complex(c->vertex(i), c->vertex(j))) return false; // a feature edge
+    if(n_in == 3) return peel_cap(c, out[0], patch, accept);
     // the new surface edge (the vertices opposite the old surface facets) must be new
     const Vertex_handle u = c->vertex(in[0]), w = c->vertex(in[1]);
     Cell_handle ec;
@@ -200,6 +204,30 @@ private:
       c->set_facet_surface_center(out[k], centre);
       m.first->set_facet_surface_center(m.second, centre);
     }
+    account(e, 0., -1);
+    return true;
+  }
+
+  // a cell with three surface facets of one patch is a cap on the surface around the vertex
+  // opposite its fourth facet (an ear, all four vertices on the surface, that no move of
+  // them can open; if the vertex has other cells, the surface is pinched there): that facet
+  // becomes the surface, and the vertex stays on the surface of its other cells, if any
+  template <class Accept>
+  bool peel_cap(const Cell_handle& c, int inner, const Surface_patch_index& patch, const Accept& accept)
+  {
+    if(c3t3_.in_dimension(c->vertex(inner)) != 2) return false; // a vertex of a feature curve or a corner
+    const Facet f(c, inner);
+    if(!accept(f, f)) return false;
+    const double e = energy_.cell(c);
+    for(int i = 0; i < 4; ++i)
+      if(i != inner) c3t3_.remove_from_complex(Facet(c, i));
+    c3t3_.remove_from_complex(c);
+    c3t3_.add_to_complex(f, patch);
+    const Facet m = tr_.mirror_facet(f);
+    const auto centre = tr_.geom_traits().construct_centroid_3_object()(
+        bare(c->vertex((inner + 1) & 3)), bare(c->vertex((inner + 2) & 3)), bare(c->vertex((inner + 3) & 3)));
+    c->set_facet_surface_center(inner, centre);
+    m.first->set_facet_surface_center(m.second, centre);
     account(e, 0., -1);
     return true;
   }

@@ -14,7 +14,8 @@
 //   Ollivier-Gooch 1997);
 // - a cell with two surface facets of one patch is peeled off the complex (the
 //   boundary peel of Energy_guided_flips.h) when its two other facets stray from
-//   the surface no further than the boundary may (Boundary_fidelity.h);
+//   the surface no further than the boundary may (Boundary_fidelity.h); so is a cap
+//   with three, whose fourth facet becomes the surface;
 // - a cell that no move lifts gets an interior edge split (Edge_split.h) when the
 //   smallest angle of the new cells beats that of the old ones.
 //
@@ -130,7 +131,7 @@ private:
     return bad;
   }
 
-  // peels `c` if it has two surface facets of one patch and its two others are faithful
+  // peels `c` if it has two (three) surface facets of one patch and its others are faithful
   bool peel(const Cell_handle& c)
   {
     int surface = -1;
