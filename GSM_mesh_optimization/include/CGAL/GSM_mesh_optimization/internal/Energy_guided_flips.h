@@ -143,8 +143,7 @@ public:
 
   /// the same peel of a cell with two surface facets of one patch, if `accept(f, g)`
   /// says yes for its two other facets, the new surface facets; or of a cell with three
-  /// (a cap), if `accept(f, f)` says yes for
-  /// its fourth facet
+  /// (a cap), if `accept(f, f)` says yes for its fourth facet
   template <class Accept>
   bool try_peel_boundary_cell(const Cell_handle& c, const Accept& accept)
   {
