@@ -33,12 +33,14 @@ namespace {
 const char* usage =
     "usage: compare_optimizers INPUT [--vertices N] [--features-angle DEG] [--chains c1,c2,...]\n"
     "                          [--repeat N] [--threads N] [--json FILE] [--out-dir DIR] [--seed N]\n"
-    "                          [--field NAME] [--verbose]\n"
-    "  INPUT  a closed triangle surface (OFF, OBJ, PLY, STL, ...) or one of sphere, cube, torus\n"
+    "                          [--field NAME] [--graded] [--verbose]\n"
+    "  INPUT  a closed triangle surface (OFF, OBJ, PLY, STL, ...) or one of sphere, cube, torus,\n"
+    "         torus-in-ball (the torus inside a ball of radius 2: two subdomains)\n"
     "  --vertices N        target vertex count of the initial mesh, within 10% (default 10000)\n"
     "  --features-angle D  protect sharp edges whose dihedral angle deviates by more than D\n"
     "                      degrees (surfaces only; default 0 = none, 60 for cube)\n"
-    "  --chains LIST       comma-separated chains of init, lloyd, odt, perturb, exude, gsm, gsm-esm\n"
+    "  --chains LIST       comma-separated chains of init, lloyd, odt, perturb, exude, gsm, gsm-esm,\n"
+    "                      gsm-uniform (gsm with one target size instead of the input's local size)\n"
     "                      joined by '+'\n"
     "                      (default: init,lloyd,odt,perturb,exude,perturb+exude,\n"
     "                       lloyd+perturb+exude,odt+perturb+exude,gsm,odt+gsm,lloyd+gsm)\n"
@@ -52,6 +54,8 @@ const char* usage =
     "                      INPUT sphere), anisotropic-cube (Fig. 3.9, INPUT cube): the initial mesh\n"
     "                      follows the field's density, gsm gets the field, and quality is\n"
     "                      measured in the metric\n"
+    "  --graded            a graded initial mesh: facet distance s/100, facet and cell sizes 3s for\n"
+    "                      the edge size s (fine where the surface curves, coarse inside)\n"
     "  --verbose           progress of the optimizers that report it (gsm)\n";
 
 
@@ -92,6 +96,8 @@ Options parse_command_line(int argc, char** argv)
       o.field = value();
     } else if(arg == "--verbose") {
       o.verbose = true;
+    } else if(arg == "--graded") {
+      o.graded = true;
     } else if(arg == "--help" || arg == "-h") {
       std::cout << usage;
       std::exit(0);

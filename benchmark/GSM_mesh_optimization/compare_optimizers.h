@@ -28,6 +28,7 @@ struct Options
   std::string out_dir;                 // --out-dir
   unsigned int seed = 0;               // --seed
   bool verbose = false;                // --verbose
+  bool graded = false;                 // --graded
   std::string field;                   // --field: adaptive-sphere, anisotropic-sphere, anisotropic-cube
 };
 

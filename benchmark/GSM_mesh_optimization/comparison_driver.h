@@ -61,14 +61,14 @@ inline const char* return_code_name(CGAL::Mesh_optimization_return_code c)
 // "odt+perturb+exude" -> {"odt", "perturb", "exude"}; "init" -> {}
 inline std::vector<std::string> chain_steps(const std::string& chain)
 {
-  static const std::vector<std::string> known{"lloyd", "odt", "perturb", "exude", "gsm", "gsm-esm"};
+  static const std::vector<std::string> known{"lloyd", "odt", "perturb", "exude", "gsm", "gsm-esm", "gsm-uniform"};
   std::vector<std::string> steps;
   if(chain == "init") return steps;
   std::stringstream ss(chain);
   for(std::string step; std::getline(ss, step, '+');) {
     if(std::find(known.begin(), known.end(), step) == known.end())
       throw Input_error("unknown optimizer '" + step + "' in chain '" + chain +
-                        "' (known: init, lloyd, odt, perturb, exude, gsm, gsm-esm, joined by '+')");
+                        "' (known: init, lloyd, odt, perturb, exude, gsm, gsm-esm, gsm-uniform, joined by '+')");
     steps.push_back(step);
   }
   if(steps.empty()) throw Input_error("empty chain");
@@ -170,12 +170,21 @@ public:
 
 private:
   // Uniform sizing: edge, facet and cell sizes all equal to s, searched so that
-  // the number of vertices is within 10% of the target.
+  // the number of vertices is within 10% of the target (with --graded: facet and
+  // cell sizes 3 s, facet distance s / 100).
   // With --field, the sizes are s times the field's isotropic size (its density).
   C3T3 mesh_with_size(double s) const
   {
     namespace params = CGAL::parameters;
     CGAL::get_default_random() = CGAL::Random(options_.seed);
+    if(field_.name.empty() && options_.graded) {
+      // what a make_mesh_3 user gets from a tight facet_distance: fine where the surface
+      // is curved, coarse elsewhere and inside
+      Mesh_criteria criteria(params::edge_size = s, params::facet_angle = 25, params::facet_size = 3 * s,
+                             params::facet_distance = s / 100., params::cell_radius_edge_ratio = 3,
+                             params::cell_size = 3 * s);
+      return CGAL::make_mesh_3<C3T3>(domain_, criteria, params::no_perturb(), params::no_exude());
+    }
     if(field_.name.empty()) {
       Mesh_criteria criteria(params::edge_size = s, params::facet_angle = 25, params::facet_size = s,
                              params::facet_distance = s / 10., params::cell_radius_edge_ratio = 3,
@@ -247,11 +256,12 @@ private:
           code = CGAL::lloyd_optimize_mesh_3(c3t3, domain_);
         else if(step == "odt")
           code = CGAL::odt_optimize_mesh_3(c3t3, domain_);
-        else if(step == "gsm" || step == "gsm-esm")
+        else if(step == "gsm" || step == "gsm-esm" || step == "gsm-uniform")
           code = run_gsm(
-              c3t3, GSM::parameters::energy(step == "gsm" ? GSM::Shape_matching_energy::GSM
-                                                    : GSM::Shape_matching_energy::ESM,
-                                      CGAL::parameters::verbose(options_.verbose)));
+              c3t3, GSM::parameters::uniform_sizing(step == "gsm-uniform",
+                    GSM::parameters::energy(step == "gsm-esm" ? GSM::Shape_matching_energy::ESM
+                                                              : GSM::Shape_matching_energy::GSM,
+                                            CGAL::parameters::verbose(options_.verbose))));
         else if(step == "perturb")
           code = CGAL::perturb_mesh_3(c3t3, domain_, params::sliver_bound = 0);
         else

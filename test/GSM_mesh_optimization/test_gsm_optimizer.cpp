@@ -32,6 +32,7 @@
 
 #include <CGAL/GSM_mesh_optimization/internal/Edge_split.h>
 #include <CGAL/GSM_mesh_optimization/internal/Energy_guided_flips.h>
+#include <CGAL/GSM_mesh_optimization/internal/Input_mesh_sizing.h>
 #include <CGAL/GSM_mesh_optimization/dissertation_metric_fields.h>
 #include <CGAL/GSM_mesh_optimization/mesh_quality_statistics.h>
 #include <CGAL/GSM_mesh_optimization/shape_matching_energy.h>
@@ -597,6 +598,25 @@ std::map<typename C3T3::Triangulation::Vertex_handle, Eigen::Vector3d> positions
   return m;
 }
 
+// the mean length of the edges in region 1 over that in region 0, `region(midpoint)`
+// giving 0, 1 or -1 (neither); each edge counted once per cell it is in
+template <class Region>
+double mean_edge_length_ratio(const Implicit_c3t3& c3t3, const Region& region)
+{
+  double sum[2] = {0, 0};
+  int n[2] = {0, 0};
+  for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c)
+    for(int i = 0; i < 4; ++i)
+      for(int j = i + 1; j < 4; ++j) {
+        const auto& a = c->vertex(i)->point();
+        const auto& b = c->vertex(j)->point();
+        const Eigen::Vector3d pa(a.x(), a.y(), a.z()), pb(b.x(), b.y(), b.z());
+        const int k = region(Eigen::Vector3d(0.5 * (pa + pb)));
+        if(k >= 0) { sum[k] += (pa - pb).norm(); ++n[k]; }
+      }
+  return (sum[1] / n[1]) / (sum[0] / n[0]);
+}
+
 void test_sphere_run()
 {
   const Implicit_domain domain = sphere_domain();
@@ -892,6 +912,22 @@ void test_threads_fields_and_boundary()
   for(const auto& vp : positions(one)) p1.push_back(vp.second);
   for(const auto& vp : positions(two)) p2.push_back(vp.second);
   VVM_CHECK(p1 == p2);
+  // the same again after other work: the copy's vertices and cells now lie elsewhere in
+  // memory, in another order of addresses (a heap with holes of every size)
+  {
+    std::vector<std::vector<char>> blocks;
+    for(int i = 0; i < 4000; ++i) blocks.emplace_back(std::size_t(64 + (i * 7919) % 20000));
+    for(std::size_t i = 0; i < blocks.size(); i += 2) std::vector<char>().swap(blocks[i]);
+    Implicit_c3t3 other = initial;
+    CGAL::gsm_optimize_mesh_3(other, domain, params::number_of_iterations(2));
+    Implicit_c3t3 again = initial;
+    CGAL::gsm_optimize_mesh_3(again, domain, GSM::parameters::number_of_threads(1, params::number_of_iterations(4)));
+    std::vector<Eigen::Vector3d> p3;
+    for(const auto& vp : positions(again)) p3.push_back(vp.second);
+    std::sort(p1.begin(), p1.end(), [](const auto& a, const auto& b) { return std::lexicographical_compare(a.data(), a.data() + 3, b.data(), b.data() + 3); });
+    std::sort(p3.begin(), p3.end(), [](const auto& a, const auto& b) { return std::lexicographical_compare(a.data(), a.data() + 3, b.data(), b.data() + 3); });
+    VVM_CHECK(p1 == p3);
+  }
 
   // polishing without splits keeps the vertex set and, with a bound above what the
   // rounds reach (31 degrees), lifts the worst cell; sliver_bound(0) skips it
@@ -921,19 +957,9 @@ void test_threads_fields_and_boundary()
 
   // edges near |x| = 0.5 (h = 0.025) against those near the boundary (h >= 0.105)
   auto length_ratio = [](const Implicit_c3t3& c3t3) {
-    double sum[2] = {0, 0};
-    int n[2] = {0, 0};
-    for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c)
-      for(int i = 0; i < 4; ++i)
-        for(int j = i + 1; j < 4; ++j) {
-          const auto& a = c->vertex(i)->point();
-          const auto& b = c->vertex(j)->point();
-          const Eigen::Vector3d pa(a.x(), a.y(), a.z()), pb(b.x(), b.y(), b.z());
-          const double r = (0.5 * (pa + pb)).norm();
-          const int k = r > 0.35 && r < 0.65 ? 0 : r > 0.9 ? 1 : -1;
-          if(k >= 0) { sum[k] += (pa - pb).norm(); ++n[k]; }
-        }
-    return (sum[1] / n[1]) / (sum[0] / n[0]);
+    return mean_edge_length_ratio(c3t3, [](const Eigen::Vector3d& m) {
+      return m.norm() > 0.35 && m.norm() < 0.65 ? 0 : m.norm() > 0.9 ? 1 : -1;
+    });
   };
   Implicit_c3t3 adaptive = initial;
   CGAL::gsm_optimize_mesh_3(adaptive, domain, GSM::parameters::sizing_field(h));
@@ -975,6 +1001,57 @@ void test_threads_fields_and_boundary()
   VVM_CHECK(complex_is_valid(c3t3));
   VVM_CHECK(before > 0 && after <= 1.1 * before);
   VVM_CHECK(GSM::mesh_quality_statistics(c3t3).min_dihedral_angle > min_before + 5);
+}
+
+// the default target size is the input mesh's: exact on a hand-made tetrahedron,
+// and a graded make_mesh_3 sphere keeps its grading through GSM
+void test_input_mesh_sizing()
+{
+  typedef CGAL::Delaunay_triangulation_3<K> Delaunay;
+  // the corner tetrahedron: the origin's three edges have length 1, the others sqrt 2
+  std::vector<K::Point_3> corners = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  Delaunay tr(corners.begin(), corners.end());
+  GSM::internal::Triangulation_complex<Delaunay> complex(tr);
+  const GSM::internal::Input_mesh_sizing raw(complex, 0), smoothed(complex, 1);
+  const double far = (1 + 2 * std::sqrt(2.)) / 3.; // mean edge length at the other corners
+  VVM_CHECK_CLOSE(raw(Eigen::Vector3d(0, 0, 0)), 1., 1e-12);
+  VVM_CHECK_CLOSE(raw(Eigen::Vector3d(0, 1, 0)), far, 1e-12);
+  VVM_CHECK_CLOSE(raw(Eigen::Vector3d(0.25, 0.25, 0.25)), 0.25 * (1 + 3 * far), 1e-12); // linear inside
+  VVM_CHECK_CLOSE(raw(Eigen::Vector3d(0.5, 0, 0)), 0.5 * (1 + far), 1e-12);
+  VVM_CHECK_CLOSE(raw(Eigen::Vector3d(2, 2, 2)), far, 1e-12); // outside: the nearest hull facet's mean
+  // one smoothing pass: half its own size, half its neighbours' mean
+  VVM_CHECK_CLOSE(smoothed(Eigen::Vector3d(0, 0, 0)), 0.5 * (1 + far), 1e-12);
+  VVM_CHECK_CLOSE(smoothed(Eigen::Vector3d(1, 0, 0)), 0.5 * far + 0.5 * (1 + 2 * far) / 3., 1e-12);
+
+  // a sphere meshed with sizes from 0.06 (x = -1) to 0.18 (x = 1)
+  const Implicit_domain domain = sphere_domain();
+  auto h = [](const K::Point_3& p, int, const Implicit_domain::Index&) { return 0.06 * (2 + p.x()); };
+  CGAL::Mesh_criteria_3<Implicit_tr> criteria(params::facet_angle = 25, params::facet_size = h,
+                                              params::facet_distance = 0.01, params::cell_radius_edge_ratio = 3,
+                                              params::cell_size = h);
+  CGAL::get_default_random() = CGAL::Random(1);
+  const Implicit_c3t3 graded =
+      CGAL::make_mesh_3<Implicit_c3t3>(domain, criteria, params::no_perturb(), params::no_exude());
+  // mean edge length where x > 0.4 over that where x < -0.4
+  auto grading = [](const Implicit_c3t3& c3t3) {
+    return mean_edge_length_ratio(c3t3, [](const Eigen::Vector3d& m) { return m.x() < -0.4 ? 0 : m.x() > 0.4 ? 1 : -1; });
+  };
+  Implicit_c3t3 local = graded, uniform = graded;
+  CGAL::gsm_optimize_mesh_3(local, domain);
+  CGAL::gsm_optimize_mesh_3(uniform, domain, GSM::parameters::uniform_sizing(true));
+  const double before = grading(graded), after = grading(local), after_uniform = grading(uniform);
+  const GSM::Mesh_quality_statistics q0 = GSM::mesh_quality_statistics(graded), q = GSM::mesh_quality_statistics(local),
+                                     qu = GSM::mesh_quality_statistics(uniform);
+  std::printf("  graded sphere (%zu vertices): coarse/fine edge length %.3f before, %.3f after GSM, %.3f with "
+              "uniform_sizing; min dihedral %.2f -> %.2f (uniform %.2f), tets under 30 deg %zu -> %zu (uniform %zu)\n",
+              graded.triangulation().number_of_vertices(), before, after, after_uniform, q0.min_dihedral_angle,
+              q.min_dihedral_angle, qu.min_dihedral_angle, q0.n_min_dihedral_below[2], q.n_min_dihedral_below[2],
+              qu.n_min_dihedral_below[2]);
+  VVM_CHECK(before > 1.8);
+  VVM_CHECK(std::abs(after / before - 1) < 0.1);
+  VVM_CHECK(after_uniform < 0.9 * before); // what the default avoids: one size fights the grading
+  VVM_CHECK(complex_is_valid(local));
+  VVM_CHECK(q.min_dihedral_angle > 25 && q.n_min_dihedral_below[2] < q0.n_min_dihedral_below[2] / 10);
 }
 
 // gsm_optimize_triangulation_3 on a Delaunay triangulation of random points in a
@@ -1053,6 +1130,7 @@ int main()
   test_bad_input();
   test_cube_with_features();
   test_threads_fields_and_boundary();
+  test_input_mesh_sizing();
   test_bare_triangulation();
   return vvm_test::report("test_gsm_optimizer");
 }

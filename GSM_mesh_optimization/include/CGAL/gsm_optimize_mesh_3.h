@@ -8,6 +8,7 @@
 #define CGAL_GSM_OPTIMIZE_MESH_3_H
 
 #include <CGAL/GSM_mesh_optimization/internal/GSM_optimizer.h>
+#include <CGAL/GSM_mesh_optimization/internal/Input_mesh_sizing.h>
 #include <CGAL/GSM_mesh_optimization/internal/Triangulation_complex.h>
 #include <CGAL/GSM_mesh_optimization/parameters.h>
 #include <CGAL/GSM_mesh_optimization/shape_matching_energy.h>
@@ -144,6 +145,7 @@ gsm_optimize(C3T3& c3t3, const MeshDomain* domain, bool boundary_fixed, const Na
   constexpr bool has_metric = !std::is_same<decltype(metric_field), CGAL::internal_np::Param_not_found>::value;
   static_assert(!(has_sizing && has_metric),
                 "GSM: give a sizing field or a metric field, not both");
+  const bool uniform = choose_parameter(get_parameter(np, GSM::internal_np::uniform_sizing), false);
   GSM::internal::Metric_field metric = GSM::internal::Metric_field::uniform(1.);
   if constexpr(has_sizing)
     metric = GSM::internal::Metric_field::sizing(
@@ -151,6 +153,11 @@ gsm_optimize(C3T3& c3t3, const MeshDomain* domain, bool boundary_fixed, const Na
   else if constexpr(has_metric)
     metric = GSM::internal::Metric_field::anisotropic(
         [metric_field](const Eigen::Vector3d& x) { return Eigen::Matrix3d(metric_field(x)); });
+  else if(!uniform) {
+    // the input's own grading (facet_distance, sizing criteria, small features) is the target
+    auto input_size = std::make_shared<const GSM::internal::Input_mesh_sizing>(c3t3);
+    metric = GSM::internal::Metric_field::sizing([input_size](const Eigen::Vector3d& x) { return (*input_size)(x); });
+  }
   // The field gives shape and relative size; the vertex count gives the absolute size.
   metric = metric.scaled(1. / GSM::internal::estimated_edge_length(c3t3, metric));
 
@@ -265,7 +272,16 @@ gsm_optimize(C3T3& c3t3, const MeshDomain* domain, bool boundary_fixed, const Na
  *       measured with `h`), so a field proportional to the one given to `make_mesh_3()` is fine.
  *       It is called from several threads at once.}
  *     \cgalParamType{a callable `double(const Eigen::Vector3d&)`, positive and finite}
- *     \cgalParamDefault{uniform: a length estimated from the volume, boundary area and vertex count (eq. 3.21)}
+ *     \cgalParamDefault{the input mesh's local size: at each vertex the mean length of its edges,
+ *       averaged with its neighbours', interpolated linearly between the input vertices; so a
+ *       graded mesh (from `facet_distance`, a sizing criterion, small features) keeps its grading}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{GSM_mesh_optimization::parameters::uniform_sizing}
+ *     \cgalParamDescription{if `true` and no sizing or metric field is given, one target edge
+ *       length for the whole mesh, estimated from its volume, boundary area and vertex count
+ *       (eq. 3.21), instead of the input mesh's local size}
+ *     \cgalParamType{bool}
+ *     \cgalParamDefault{false}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{GSM_mesh_optimization::parameters::metric_field}
  *     \cgalParamDescription{an anisotropic metric `M(p)`: cells are measured after mapping by

@@ -94,8 +94,8 @@ void optimize_lattice_mesh(C3T3& c3t3, const MeshDomain& domain, const FrameFiel
       return Eigen::Matrix3d(B.transpose() * B);
     };
     CGAL::gsm_optimize_mesh_3(c3t3, domain, GSM::parameters::metric_field(metric, gsm_np));
-  } else
-    CGAL::gsm_optimize_mesh_3(c3t3, domain, gsm_np);
+  } else // rotations of one scale: the lattice's edge length is the target everywhere
+    CGAL::gsm_optimize_mesh_3(c3t3, domain, GSM::parameters::uniform_sizing(true, gsm_np));
   r.gsm_time = timer.time();
 }
 

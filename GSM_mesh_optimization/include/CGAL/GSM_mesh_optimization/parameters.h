@@ -30,6 +30,7 @@ enum number_of_threads_t { number_of_threads };
 enum split_edges_t { split_edges };
 enum smooth_vertices_t { smooth_vertices };
 enum sliver_bound_t { sliver_bound };
+enum uniform_sizing_t { uniform_sizing };
 
 } // namespace internal_np
 
@@ -53,6 +54,8 @@ CGAL_VVM_ADD_NAMED_PARAMETER(sliver_bound)
 CGAL_VVM_ADD_NAMED_PARAMETER(split_edges)
 /// `bool`: whether the rounds move vertices (`false`: flips only, e.g. to keep a lattice; default `true`)
 CGAL_VVM_ADD_NAMED_PARAMETER(smooth_vertices)
+/// `bool`: one target edge length for the whole mesh instead of the input mesh's local size (default `false`)
+CGAL_VVM_ADD_NAMED_PARAMETER(uniform_sizing)
 
 } // namespace parameters
 } // namespace GSM_mesh_optimization

@@ -87,9 +87,9 @@ public:
               {c->vertex((i + 1) & 3), c->vertex((i + 2) & 3), c->vertex((i + 3) & 3)}}));
       }
     }
-    std::sort(edges.begin(), edges.end());
+    std::sort(edges.begin(), edges.end(), [this](const auto& x, const auto& y) { return precedes(x, y); });
     edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
-    std::sort(facets.begin(), facets.end());
+    std::sort(facets.begin(), facets.end(), [this](const auto& x, const auto& y) { return precedes(x, y); });
     facets.erase(std::unique(facets.begin(), facets.end()), facets.end());
     for(const auto& e : edges) {
       Cell_handle c;
@@ -291,10 +291,24 @@ private:
     return height < 0.05 * max_edge;
   }
 
-  template <std::size_t N>
-  static std::array<Vertex_handle, N> sorted(std::array<Vertex_handle, N> a)
+  // Vertices ordered by position, not by handle: a handle's address depends on what the
+  // process allocated before, and the order of the flips, so the result, must not.
+  bool precedes(const Vertex_handle& a, const Vertex_handle& b) const
   {
-    std::sort(a.begin(), a.end());
+    return tr_.geom_traits().compare_xyz_3_object()(bare(a), bare(b)) == SMALLER;
+  }
+
+  template <std::size_t N>
+  bool precedes(const std::array<Vertex_handle, N>& a, const std::array<Vertex_handle, N>& b) const
+  {
+    return std::lexicographical_compare(a.begin(), a.end(), b.begin(), b.end(),
+                                        [this](const Vertex_handle& x, const Vertex_handle& y) { return precedes(x, y); });
+  }
+
+  template <std::size_t N>
+  std::array<Vertex_handle, N> sorted(std::array<Vertex_handle, N> a) const
+  {
+    std::sort(a.begin(), a.end(), [this](const Vertex_handle& x, const Vertex_handle& y) { return precedes(x, y); });
     return a;
   }
 

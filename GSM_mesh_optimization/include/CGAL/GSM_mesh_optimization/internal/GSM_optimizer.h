@@ -135,14 +135,22 @@ public:
 private:
   static constexpr int max_flip_passes = 5;
   static constexpr int max_polishing_passes = 20;
+  static constexpr int max_stalled_passes = 2;
+  static constexpr double min_angle_gain = 0.01; // degrees
 
-  // rounds of the final stage, numbered on from the last round `round`, until one changes nothing
+  // rounds of the final stage, numbered on from the last round `round`, until one changes
+  // nothing or the worst cells stop improving: two passes in a row that neither raise the
+  // smallest angle nor lower the number of cells under the bound by a 200th (on a mesh that
+  // cannot reach the bound, such as a steeply graded one, passes go on moving vertices
+  // back and forth for nothing)
   void polish(int round, Energy_guided_flips<C3T3>& flips, double& sum, std::size_t& count,
               const CGAL::Real_timer& timer)
   {
     Edge_split<C3T3> splits(c3t3_, energy_, sum, count);
     Sliver_polisher<C3T3, MeshDomain> polisher(c3t3_, energy_, smoother_, flips, splits, options_.sliver_bound,
                                                options_.do_split, options_.freeze_boundary);
+    auto best = polisher.worst_and_count_under_bound();
+    int stalled = 0;
     for(int pass = 0; pass < max_polishing_passes && !time_is_up(timer); ++pass) {
       const double start = timer.time();
       const auto done = polisher.polish_pass([&]() { return time_is_up(timer); });
@@ -159,6 +167,12 @@ private:
       report.elapsed_time = timer.time();
       notify(report, report.elapsed_time - start, 0);
       if(done.moves == 0 && done.peels == 0 && done.splits == 0) break;
+      const auto now = polisher.worst_and_count_under_bound();
+      const bool better = now.first > best.first + min_angle_gain ||
+                          best.second - (std::min)(best.second, now.second) > best.second / 200;
+      best = {(std::max)(best.first, now.first), (std::min)(best.second, now.second)};
+      stalled = better ? 0 : stalled + 1;
+      if(stalled == max_stalled_passes) break;
     }
   }
 

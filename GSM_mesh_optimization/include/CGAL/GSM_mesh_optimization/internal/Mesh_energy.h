@@ -72,6 +72,7 @@ public:
   double min_dihedral_angle(const Eigen::Vector3d& p0, const Eigen::Vector3d& p1, const Eigen::Vector3d& p2,
                             const Eigen::Vector3d& p3) const
   {
+    if(metric_.is_isotropic()) return tetrahedron_quality({{p0, p1, p2, p3}}).min_dihedral_angle();
     const Eigen::Matrix3d B = metric_(0.25 * (p0 + p1 + p2 + p3));
     return tetrahedron_quality({{B * p0, B * p1, B * p2, B * p3}}).min_dihedral_angle();
   }
@@ -102,6 +103,31 @@ public:
     std::array<Eigen::Vector3d, 4> p;
     for(int i = 0; i < 4; ++i) p[i] = c->vertex(i) == v ? x : position(c->vertex(i));
     return tetrahedron(p[0], p[1], p[2], p[3]);
+  }
+
+  /// the map B of cell `c` where it is: at its centroid
+  Eigen::Matrix3d frame(const Cell_handle& c) const
+  {
+    return metric_(0.25 * (position(c->vertex(0)) + position(c->vertex(1)) + position(c->vertex(2)) +
+                           position(c->vertex(3))));
+  }
+
+  /// energy of cell `c` with its vertex `v` at `x`, mapped by a given `B`
+  double cell(const Cell_handle& c, const Vertex_handle& v, const Eigen::Vector3d& x, const Eigen::Matrix3d& B) const
+  {
+    std::array<Eigen::Vector3d, 4> p;
+    for(int i = 0; i < 4; ++i) p[i] = B * (c->vertex(i) == v ? x : position(c->vertex(i)));
+    return tetrahedron_energy(energy_, p[0], p[1], p[2], p[3]);
+  }
+
+  /// derivatives of the energy of cell `c`, mapped by a given `B`, with respect to its vertex `v` at `x`
+  Energy_derivatives cell_derivatives(const Cell_handle& c, const Vertex_handle& v, const Eigen::Vector3d& x,
+                                      const Eigen::Matrix3d& B) const
+  {
+    std::array<Eigen::Vector3d, 3> others;
+    for(int i = 0, k = 0; i < 4; ++i)
+      if(c->vertex(i) != v) others[k++] = B * position(c->vertex(i));
+    return tetrahedron_energy_derivatives(energy_, B * x, others[0], others[1], others[2]).mapped_back(B);
   }
 
   /// derivatives of the energy of cell `c` with respect to its vertex `v`, placed at `x`

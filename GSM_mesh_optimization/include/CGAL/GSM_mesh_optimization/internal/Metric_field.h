@@ -30,6 +30,7 @@ public:
       throw std::invalid_argument("GSM: the template edge length must be positive and finite");
     Metric_field m;
     m.constant_B_ = Eigen::Matrix3d::Identity() / a;
+    m.isotropic_ = true;
     return m;
   }
 
@@ -47,6 +48,7 @@ public:
       }
       return Eigen::Matrix3d::Identity() / s;
     };
+    m.isotropic_ = true;
     return m;
   }
 
@@ -59,6 +61,8 @@ public:
   }
 
   bool is_constant() const { return !B_; }
+  /// B is a multiple of the identity everywhere: angles are those of the mesh itself
+  bool is_isotropic() const { return isotropic_; }
   Eigen::Matrix3d operator()(const Eigen::Vector3d& x) const
   {
     return B_ ? Eigen::Matrix3d(scale_ * B_(x)) : constant_B_;
@@ -95,6 +99,7 @@ public:
 private:
   Eigen::Matrix3d constant_B_ = Eigen::Matrix3d::Identity();
   double scale_ = 1;
+  bool isotropic_ = false;
   std::function<Eigen::Matrix3d(const Eigen::Vector3d&)> B_;
 };
 

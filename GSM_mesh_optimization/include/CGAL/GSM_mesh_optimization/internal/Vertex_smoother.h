@@ -62,6 +62,10 @@ public:
     Vertex_handle v;
     int dimension = 3;
     std::vector<Cell_handle> finite_cells, complex_cells, infinite_cells;
+    // B of each complex cell where the ring was made, for a metric that varies: the Newton
+    // step and the line search measure with these (B is a constant in the derivatives),
+    // and only the move taken is measured again with B where the cells go
+    std::vector<Eigen::Matrix3d> frames;
     double max_neighbor_distance = 0;
     std::vector<Facet> surface_facets;                // surface and curve vertices, each facet once
     Eigen::Vector3d normal = Eigen::Vector3d::Zero(); // surface vertices
@@ -115,6 +119,8 @@ public:
           r.max_neighbor_distance = (std::max)(r.max_neighbor_distance, (energy_.position(c->vertex(i)) - x).norm());
     }
     if(r.complex_cells.empty()) return false;
+    if(!energy_.metric().is_constant())
+      for(const Cell_handle& c : r.complex_cells) r.frames.push_back(energy_.frame(c));
     if(r.dimension < 3) collect_surface_facets(r);
     if(r.dimension == 2) return surface_frame(r);
     if(r.dimension == 1) return curve_frame(r);
@@ -137,13 +143,26 @@ public:
     return e;
   }
 
+  /// the same with the ring's frames (exact where the ring was made)
+  double frozen_ring_energy(const Ring& r, const Eigen::Vector3d& x) const
+  {
+    if(r.frames.empty()) return ring_energy(r, x);
+    double e = 0;
+    for(std::size_t k = 0; k < r.complex_cells.size(); ++k) e += energy_.cell(r.complex_cells[k], r.v, x, r.frames[k]);
+    return e;
+  }
+
   /// the Newton step h^-1 g restricted to the vertex's degrees of freedom,
   /// clipped to the largest move of the one-ring (the paper's alpha_init); zero if none
   Eigen::Vector3d newton_step(const Ring& r, bool& is_descent) const
   {
     const Eigen::Vector3d x = energy_.position(r.v);
     Energy_derivatives d;
-    for(const Cell_handle& c : r.complex_cells) d += energy_.cell_derivatives(c, r.v, x);
+    if(r.frames.empty())
+      for(const Cell_handle& c : r.complex_cells) d += energy_.cell_derivatives(c, r.v, x);
+    else
+      for(std::size_t k = 0; k < r.complex_cells.size(); ++k)
+        d += energy_.cell_derivatives(r.complex_cells[k], r.v, x, r.frames[k]);
     Eigen::Vector3d step = Eigen::Vector3d::Zero();
     is_descent = false;
     if(!d.gradient.allFinite() || !d.hessian.allFinite()) return step;
@@ -190,7 +209,7 @@ public:
     const Eigen::Vector3d step = newton_step(r, is_descent);
     if(step.isZero()) return false;
     const Eigen::Vector3d x0 = energy_.position(r.v);
-    const double e0 = ring_energy(r, x0);
+    const double e0 = frozen_ring_energy(r, x0);
     const double tiny = 1e-12 * (std::max)(1., std::abs(e0));
     double alpha = 1;
     for(int k = 0; k < max_backtracking_steps; ++k, alpha *= 0.5) {
@@ -200,8 +219,10 @@ public:
         if(!candidate(r, x0 - sign * alpha * step, p)) continue;
         const Eigen::Vector3d x = Energy::to_eigen(p);
         if(!is_valid_position(r, p)) continue;
-        const double e = ring_energy(r, x);
-        if(e < e0 - tiny && keeps_boundary_faithful(r, p)) {
+        double e = frozen_ring_energy(r, x);
+        if(!(e < e0 - tiny)) continue;
+        if(!r.frames.empty() && !((e = ring_energy(r, x)) < e0 - tiny)) continue; // where the cells went
+        if(keeps_boundary_faithful(r, p)) {
           move(r.v, p);
           energy_change = e - e0;
           return true;
