@@ -100,17 +100,12 @@ public:
     // are also the barycentric weights: no randomness and no exact arithmetic, so that
     // the same point gives the same value in any thread at the cost of a few products
     Dt_cell c = hint(x);
-    std::array<double, 4> w;
     for(int step = 0; step < max_walk_steps; ++step) {
       if(dt_.is_infinite(c)) return hull_facet_mean(c);
-      std::array<Eigen::Vector3d, 4> q;
-      for(int i = 0; i < 4; ++i) q[i] = to_eigen(c->vertex(i)->point());
+      const std::array<double, 4> w = volumes(c, x);
       double total = 0, most_negative = 0;
       int beyond = -1;
       for(int i = 0; i < 4; ++i) {
-        std::array<Eigen::Vector3d, 4> r = q;
-        r[i] = x;
-        w[i] = (r[1] - r[0]).dot((r[2] - r[0]).cross(r[3] - r[0]));
         total += std::abs(w[i]);
         if(w[i] < most_negative) {
           most_negative = w[i];
@@ -118,33 +113,43 @@ public:
         }
       }
       // on a facet (to round-off) is inside: no back-and-forth between two cells
-      if(beyond < 0 || most_negative > -1e-12 * total) {
-        double s = 0, sum = 0;
-        for(int i = 0; i < 4; ++i) {
-          const double wi = (std::max)(w[i], 0.);
-          s += wi * c->vertex(i)->info();
-          sum += wi;
-        }
-        return sum > 0 ? s / sum : 0.25 * (c->vertex(0)->info() + c->vertex(1)->info() + c->vertex(2)->info() +
-                                           c->vertex(3)->info());
-      }
+      if(beyond < 0 || most_negative > -1e-12 * total) return interpolate(c, w);
       c = c->neighbor(beyond);
     }
     // a walk that does not end (round-off on nearly flat cells): CGAL's exact location
     c = dt_.locate(K::Point_3(x[0], x[1], x[2]), c);
-    if(dt_.is_infinite(c)) return hull_facet_mean(c);
-    double s = 0, sum = 0;
-    for(int i = 0; i < 4; ++i) {
-      std::array<Eigen::Vector3d, 4> r;
-      for(int j = 0; j < 4; ++j) r[j] = j == i ? x : to_eigen(c->vertex(j)->point());
-      const double wi = std::abs((r[1] - r[0]).dot((r[2] - r[0]).cross(r[3] - r[0])));
-      s += wi * c->vertex(i)->info();
-      sum += wi;
-    }
-    return sum > 0 ? s / sum : c->vertex(0)->info();
+    return dt_.is_infinite(c) ? hull_facet_mean(c) : interpolate(c, volumes(c, x));
   }
 
 private:
+  // six times the signed volumes of cell `c` with its vertex i replaced by `x`: positive
+  // inside, and the barycentric weights of `x` once divided by their sum
+  static std::array<double, 4> volumes(const Dt_cell& c, const Eigen::Vector3d& x)
+  {
+    std::array<Eigen::Vector3d, 4> q;
+    for(int i = 0; i < 4; ++i) q[i] = to_eigen(c->vertex(i)->point());
+    std::array<double, 4> w;
+    for(int i = 0; i < 4; ++i) {
+      std::array<Eigen::Vector3d, 4> r = q;
+      r[i] = x;
+      w[i] = (r[1] - r[0]).dot((r[2] - r[0]).cross(r[3] - r[0]));
+    }
+    return w;
+  }
+
+  // the vertices' sizes weighted by `w`, negative weights (round-off) taken as zero
+  static double interpolate(const Dt_cell& c, const std::array<double, 4>& w)
+  {
+    double s = 0, sum = 0;
+    for(int i = 0; i < 4; ++i) {
+      const double wi = (std::max)(w[i], 0.);
+      s += wi * c->vertex(i)->info();
+      sum += wi;
+    }
+    return sum > 0 ? s / sum
+                   : 0.25 * (c->vertex(0)->info() + c->vertex(1)->info() + c->vertex(2)->info() + c->vertex(3)->info());
+  }
+
   double hull_facet_mean(const Dt_cell& c) const
   {
     double s = 0;
