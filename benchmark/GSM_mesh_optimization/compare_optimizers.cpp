@@ -33,15 +33,17 @@ namespace {
 const char* usage =
     "usage: compare_optimizers INPUT [--vertices N] [--features-angle DEG] [--chains c1,c2,...]\n"
     "                          [--repeat N] [--threads N] [--json FILE] [--out-dir DIR] [--seed N]\n"
-    "                          [--field NAME] [--graded] [--verbose]\n"
+    "                          [--field NAME] [--graded] [--verbose] [--refuse-self-intersecting]\n"
     "  INPUT  a closed triangle surface (OFF, OBJ, PLY, STL, ...) or one of sphere, cube, torus,\n"
     "         torus-in-ball (the torus inside a ball of radius 2: two subdomains)\n"
     "  --vertices N        target vertex count of the initial mesh, within 10% (default 10000)\n"
     "  --features-angle D  protect sharp edges whose dihedral angle deviates by more than D\n"
     "                      degrees (surfaces only; default 0 = none, 60 for cube)\n"
     "  --chains LIST       comma-separated chains of init, lloyd, odt, perturb, exude, gsm, gsm-esm,\n"
-    "                      gsm-uniform (gsm with one target size instead of the input's local size)\n"
-    "                      joined by '+'\n"
+    "                      gsm-uniform (gsm with one target size instead of the input's local size),\n"
+    "                      remesh (CGAL's tetrahedral_isotropic_remeshing, 3 iterations, feature\n"
+    "                      edges constrained, the edge length that keeps the vertex count within\n"
+    "                      10%), joined by '+'\n"
     "                      (default: init,lloyd,odt,perturb,exude,perturb+exude,\n"
     "                       lloyd+perturb+exude,odt+perturb+exude,gsm,odt+gsm,lloyd+gsm)\n"
     "  --repeat N          runs per chain; optimizer times are medians (default 1)\n"
@@ -56,7 +58,9 @@ const char* usage =
     "                      measured in the metric\n"
     "  --graded            a graded initial mesh: facet distance s/100, facet and cell sizes 3s for\n"
     "                      the edge size s (fine where the surface curves, coarse inside)\n"
-    "  --verbose           progress of the optimizers that report it (gsm)\n";
+    "  --verbose           progress of the optimizers that report it (gsm)\n"
+    "  --refuse-self-intersecting  stop with an error on a self-intersecting surface (default: a\n"
+    "                      warning, and make_mesh_3 meshes what its inside test sees)\n";
 
 
 Options parse_command_line(int argc, char** argv)
@@ -98,6 +102,8 @@ Options parse_command_line(int argc, char** argv)
       o.verbose = true;
     } else if(arg == "--graded") {
       o.graded = true;
+    } else if(arg == "--refuse-self-intersecting") {
+      o.refuse_self_intersecting = true;
     } else if(arg == "--help" || arg == "-h") {
       std::cout << usage;
       std::exit(0);

@@ -29,6 +29,7 @@ struct Options
   unsigned int seed = 0;               // --seed
   bool verbose = false;                // --verbose
   bool graded = false;                 // --graded
+  bool refuse_self_intersecting = false; // --refuse-self-intersecting
   std::string field;                   // --field: adaptive-sphere, anisotropic-sphere, anisotropic-cube
 };
 

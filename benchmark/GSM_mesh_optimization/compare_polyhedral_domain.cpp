@@ -32,11 +32,18 @@ typedef CGAL::Mesh_triangulation_3<Domain, CGAL::Default, CGAL::Sequential_tag>:
 typedef CGAL::Mesh_complex_3_in_triangulation_3<Tr, Domain::Corner_index, Domain::Curve_index> C3T3;
 namespace PMP = CGAL::Polygon_mesh_processing;
 
-// a closed, non self-intersecting surface enclosing a volume; anything else is an Input_error
-double read_closed_surface(const std::string& path, Surface_mesh& sm)
+// a closed surface enclosing a volume; anything else is an Input_error. A self-intersecting
+// one (which make_mesh_3 meshes) gets a warning, or is refused if asked
+double read_closed_surface(const std::string& path, Surface_mesh& sm, bool refuse_self_intersecting)
 {
   try {
-    return GSM::IO::read_closed_surface(path, sm);
+    bool self_intersects = false;
+    const double volume = GSM::IO::read_closed_surface(path, sm, refuse_self_intersecting ? nullptr : &self_intersects);
+    if(self_intersects)
+      std::cerr << "compare_optimizers: warning: the surface in '" << path
+                << "' self-intersects; make_mesh_3 meshes the inside its ray-parity test sees, which may not "
+                   "be the intended one (--refuse-self-intersecting to stop here)\n";
+    return volume;
   } catch(const std::invalid_argument& e) {
     throw Input_error(e.what());
   }
@@ -48,7 +55,7 @@ int run_polyhedral_domain(const Options& options)
 {
   const bool is_cube = options.input == "cube";
   Surface_mesh surface = is_cube ? box_surface<Surface_mesh>(-1, 1) : Surface_mesh();
-  const double volume = is_cube ? std::abs(PMP::volume(surface)) : read_closed_surface(options.input, surface);
+  const double volume = is_cube ? std::abs(PMP::volume(surface)) : read_closed_surface(options.input, surface, options.refuse_self_intersecting);
   Domain domain(surface);
   const double angle = options.features_angle >= 0 ? options.features_angle : (is_cube ? 60. : 0.);
   if(angle > 0) domain.detect_features(angle);

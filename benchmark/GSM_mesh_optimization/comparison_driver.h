@@ -9,6 +9,7 @@
 
 #include "compare_optimizers.h"
 #include "dihedral_histogram_svg.h"
+#include "tetrahedral_remeshing_step.h"
 
 #include <CGAL/GSM_mesh_optimization/IO/write_VTU_with_quality.h>
 #include <CGAL/GSM_mesh_optimization/dissertation_metric_fields.h>
@@ -61,14 +62,14 @@ inline const char* return_code_name(CGAL::Mesh_optimization_return_code c)
 // "odt+perturb+exude" -> {"odt", "perturb", "exude"}; "init" -> {}
 inline std::vector<std::string> chain_steps(const std::string& chain)
 {
-  static const std::vector<std::string> known{"lloyd", "odt", "perturb", "exude", "gsm", "gsm-esm", "gsm-uniform"};
+  static const std::vector<std::string> known{"lloyd", "odt", "perturb", "exude", "gsm", "gsm-esm", "gsm-uniform", "remesh"};
   std::vector<std::string> steps;
   if(chain == "init") return steps;
   std::stringstream ss(chain);
   for(std::string step; std::getline(ss, step, '+');) {
     if(std::find(known.begin(), known.end(), step) == known.end())
       throw Input_error("unknown optimizer '" + step + "' in chain '" + chain +
-                        "' (known: init, lloyd, odt, perturb, exude, gsm, gsm-esm, gsm-uniform, joined by '+')");
+                        "' (known: init, lloyd, odt, perturb, exude, gsm, gsm-esm, gsm-uniform, remesh, joined by '+')");
     steps.push_back(step);
   }
   if(steps.empty()) throw Input_error("empty chain");
@@ -262,7 +263,10 @@ private:
                     GSM::parameters::energy(step == "gsm-esm" ? GSM::Shape_matching_energy::ESM
                                                               : GSM::Shape_matching_energy::GSM,
                                             CGAL::parameters::verbose(options_.verbose))));
-        else if(step == "perturb")
+        else if(step == "remesh") {
+          tetrahedral_remeshing_step(c3t3, remeshing_edge_length());
+          code = CGAL::MAX_ITERATION_NUMBER_REACHED;
+        } else if(step == "perturb")
           code = CGAL::perturb_mesh_3(c3t3, domain_, params::sliver_bound = 0);
         else
           code = CGAL::exude_mesh_3(c3t3, params::sliver_bound = 0);
@@ -279,6 +283,23 @@ private:
     if(boundary_distance_) result.boundary_distance = boundary_distance_(c3t3);
     if(!options_.out_dir.empty()) write_outputs(c3t3, result);
     return result;
+  }
+
+  // the target edge length of `remesh` that keeps the initial mesh's vertex count within 10%:
+  // the mean edge length, corrected by the cube root of the count ratio (untimed, once)
+  double remeshing_edge_length()
+  {
+    if(remeshing_edge_length_ > 0) return remeshing_edge_length_;
+    const double n0 = double(initial_.triangulation().number_of_vertices());
+    double length = mean_edge_length(initial_);
+    for(int attempt = 0; attempt < 4; ++attempt) {
+      C3T3 trial = initial_;
+      tetrahedral_remeshing_step(trial, length);
+      const double ratio = double(trial.triangulation().number_of_vertices()) / n0;
+      if(std::abs(ratio - 1) < 0.05) break;
+      length *= std::cbrt(ratio);
+    }
+    return remeshing_edge_length_ = length;
   }
 
   std::string out_path(const std::string& chain, const std::string& extension) const
@@ -361,6 +382,7 @@ private:
   C3T3 initial_;
   double edge_size_ = 0;
   double mesh_time_s_ = 0;
+  double remeshing_edge_length_ = 0;
   mutable bool first_json_line_ = true;
 };
 

@@ -9,8 +9,9 @@ usage: check_compare_optimizers.py COMPARE_OPTIMIZERS DATA_DIR WORK_DIR
   small sizes, then reads every .mesh and .vtu back with meshio: point and tet
   counts, and the min dihedral angle and the tets under 30 deg recomputed here,
   independently, from the .mesh, must equal what the JSON reports;
-- feeds it bad inputs (missing, empty, garbage, open, self-intersecting,
-  non-finite, bad options) and expects a clear message and a non-zero exit.
+- feeds it bad inputs (missing, empty, garbage, open, non-finite, bad options,
+  self-intersecting with --refuse-self-intersecting) and expects a clear message and
+  a non-zero exit; a self-intersecting surface alone gets a warning and a run.
 """
 import json
 import os
@@ -182,7 +183,13 @@ def main():
     check_error("empty file", [write("empty.off", "")], "empty file")
     check_error("garbage", [write("garbage.off", "this is not a mesh\n")], "cannot read")
     check_error("open surface", [write("open_cube.off", open_cube or "")], "open")
-    check_error("self-intersecting", [write("two_cubes.off", two_cubes)], "self-intersect")
+    # a self-intersecting closed surface: make_mesh_3 meshes it, so a warning and a run
+    # (or a refusal if asked)
+    two_cubes_path = write("two_cubes.off", two_cubes)
+    r = run([two_cubes_path, "--vertices", "300", "--chains", "init"])
+    check(r.returncode == 0 and "warning" in r.stderr and "self-intersects" in r.stderr and "init" in r.stdout,
+          f"self-intersecting surface: a warning and a run (exit {r.returncode}, stderr {r.stderr.strip()[:300]})")
+    check_error("self-intersecting, refused", [two_cubes_path, "--refuse-self-intersecting"], "self-intersect")
     check_error("non-finite coordinate", [write("nan_cube.off", nan_cube)], "non-finite", "cannot read")
     check_error("no input", [], "no INPUT")
     check_error("unknown chain", ["sphere", "--chains", "init,smooth"], "unknown optimizer 'smooth'")

@@ -33,6 +33,7 @@
 #include <CGAL/GSM_mesh_optimization/internal/Edge_split.h>
 #include <CGAL/GSM_mesh_optimization/internal/Energy_guided_flips.h>
 #include <CGAL/GSM_mesh_optimization/internal/Input_mesh_sizing.h>
+#include <CGAL/GSM_mesh_optimization/internal/Vertex_sizes.h>
 #include <CGAL/GSM_mesh_optimization/dissertation_metric_fields.h>
 #include <CGAL/GSM_mesh_optimization/mesh_quality_statistics.h>
 #include <CGAL/GSM_mesh_optimization/shape_matching_energy.h>
@@ -47,6 +48,7 @@
 #include <functional>
 #include <limits>
 #include <map>
+#include <memory>
 #include <random>
 #include <set>
 #include <string>
@@ -1022,6 +1024,32 @@ void test_input_mesh_sizing()
   // one smoothing pass: half its own size, half its neighbours' mean
   VVM_CHECK_CLOSE(smoothed(Eigen::Vector3d(0, 0, 0)), 0.5 * (1 + far), 1e-12);
   VVM_CHECK_CLOSE(smoothed(Eigen::Vector3d(1, 0, 0)), 0.5 * far + 0.5 * (1 + 2 * far) / 3., 1e-12);
+
+  // the sizes the vertices carry: the field where each vertex is, again when it moves; a
+  // cell's map is I / (the mean of its corners' sizes), its energy that of the mapped cell
+  auto field = [](const Eigen::Vector3d& x) { return 1 + x.x() + 2 * x.y(); };
+  auto sizes = std::make_shared<GSM::internal::Vertex_sizes<Delaunay>>(tr, field);
+  std::array<Delaunay::Vertex_handle, 4> corner;
+  for(auto w : tr.finite_vertex_handles()) corner[std::size_t(w->point().x() + 2 * w->point().y() + 3 * w->point().z())] = w;
+  const Delaunay::Cell_handle cell = tr.finite_cells_begin();
+  VVM_CHECK_CLOSE((*sizes)(corner[1]), 2., 1e-15);
+  VVM_CHECK_CLOSE(sizes->sum(cell), 1. + 2. + 3. + 1., 1e-15);
+  VVM_CHECK_CLOSE(sizes->sum(cell, corner[2], 0.5), 1. + 2. + 0.5 + 1., 1e-15);
+  const GSM::internal::Metric_field unit = GSM::internal::Metric_field::uniform(1.);
+  const GSM::internal::Mesh_energy<GSM::internal::Triangulation_complex<Delaunay>> sized(
+      complex, unit, GSM::Shape_matching_energy::GSM, sizes);
+  std::array<Eigen::Vector3d, 4> mapped;
+  for(int i = 0; i < 4; ++i) mapped[i] = GSM::internal::to_eigen(cell->vertex(i)->point()) / (7. / 4.);
+  VVM_CHECK_CLOSE(sized.cell(cell), GSM::tetrahedron_energy(GSM::Shape_matching_energy::GSM, mapped[0], mapped[1],
+                                                            mapped[2], mapped[3]), 1e-12);
+  corner[3]->set_point(K::Point_3(0.1, 0.2, 1)); // moved: its size is taken again where it is
+  sized.vertex_moved(corner[3]);
+  VVM_CHECK_CLOSE((*sizes)(corner[3]), 1.5, 1e-15);
+  VVM_CHECK_CLOSE(sizes->sum(cell), 1. + 2. + 3. + 1.5, 1e-15);
+  bool refused = false;
+  try { GSM::internal::Vertex_sizes<Delaunay>(tr, [](const Eigen::Vector3d&) { return -1.; }); }
+  catch(const std::invalid_argument& e) { refused = std::string(e.what()).find("sizing field is -1") != std::string::npos; }
+  VVM_CHECK(refused);
 
   // a sphere meshed with sizes from 0.06 (x = -1) to 0.18 (x = 1)
   const Implicit_domain domain = sphere_domain();

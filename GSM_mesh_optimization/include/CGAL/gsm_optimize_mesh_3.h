@@ -10,6 +10,7 @@
 #include <CGAL/GSM_mesh_optimization/internal/GSM_optimizer.h>
 #include <CGAL/GSM_mesh_optimization/internal/Input_mesh_sizing.h>
 #include <CGAL/GSM_mesh_optimization/internal/Triangulation_complex.h>
+#include <CGAL/GSM_mesh_optimization/internal/Vertex_sizes.h>
 #include <CGAL/GSM_mesh_optimization/parameters.h>
 #include <CGAL/GSM_mesh_optimization/shape_matching_energy.h>
 #include <CGAL/GSM_mesh_optimization/tetrahedron_quality.h>
@@ -64,12 +65,13 @@ void check_input_mesh(const C3T3& c3t3)
                                 " inverted or flat cells");
 }
 
-// Template edge length of eq. 3.21, measured in the metric: the regular tet edge l of a
-// BCC-like mesh with N vertices in a domain of volume V and boundary area A (both
-// mapped by B): V = N l^3 / sqrt(2) - A l / sqrt(6). Evaluating B at every cell also
-// rejects a bad field before anything changes.
+// Template edge length of eq. 3.21, measured in the metric (or in the vertices' sizes,
+// if given): the regular tet edge l of a BCC-like mesh with N vertices in a domain of
+// volume V and boundary area A (both mapped by B): V = N l^3 / sqrt(2) - A l / sqrt(6).
+// Evaluating B at every cell also rejects a bad field before anything changes.
 template <class C3T3>
-double estimated_edge_length(const C3T3& c3t3, const Metric_field& metric = Metric_field::uniform(1.))
+double estimated_edge_length(const C3T3& c3t3, const Metric_field& metric = Metric_field::uniform(1.),
+                             const Vertex_sizes<typename C3T3::Triangulation>* sizing = nullptr)
 {
   const auto& tr = c3t3.triangulation();
   double volume = 0, area = 0;
@@ -80,13 +82,18 @@ double estimated_edge_length(const C3T3& c3t3, const Metric_field& metric = Metr
       p[i] = to_eigen(tr.point(c, i));
       vertices.insert(&*c->vertex(i));
     }
-    const double det = metric(0.25 * (p[0] + p[1] + p[2] + p[3])).determinant();
+    const double det = sizing ? std::pow(0.25 * sizing->sum(c), -3)
+                              : metric(0.25 * (p[0] + p[1] + p[2] + p[3])).determinant();
     volume += std::abs(det * (p[1] - p[0]).dot((p[2] - p[0]).cross(p[3] - p[0]))) / 6.;
   }
   for(auto f = c3t3.facets_in_complex_begin(); f != c3t3.facets_in_complex_end(); ++f) {
     std::array<Eigen::Vector3d, 3> p;
-    for(int k = 0; k < 3; ++k) p[k] = to_eigen(tr.point(f->first, (f->second + 1 + k) & 3));
-    const Eigen::Matrix3d B = metric((p[0] + p[1] + p[2]) / 3.);
+    double h = 0;
+    for(int k = 0; k < 3; ++k) {
+      p[k] = to_eigen(tr.point(f->first, (f->second + 1 + k) & 3));
+      if(sizing) h += (*sizing)(f->first->vertex((f->second + 1 + k) & 3)) / 3.;
+    }
+    const Eigen::Matrix3d B = sizing ? Eigen::Matrix3d(Eigen::Matrix3d::Identity() / h) : metric((p[0] + p[1] + p[2]) / 3.);
     area += 0.5 * (B * (p[1] - p[0])).cross(B * (p[2] - p[0])).norm();
   }
   const double n = double(vertices.size());
@@ -147,25 +154,30 @@ gsm_optimize(C3T3& c3t3, const MeshDomain* domain, bool boundary_fixed, const Na
                 "GSM: give a sizing field or a metric field, not both");
   const bool uniform = choose_parameter(get_parameter(np, GSM::internal_np::uniform_sizing), false);
   GSM::internal::Metric_field metric = GSM::internal::Metric_field::uniform(1.);
+  // an isotropic size (given, or the input mesh's) is sampled at the vertices
+  typedef GSM::internal::Vertex_sizes<typename C3T3::Triangulation> Vertex_sizes;
+  std::shared_ptr<Vertex_sizes> vertex_sizes;
   if constexpr(has_sizing)
-    metric = GSM::internal::Metric_field::sizing(
-        [sizing](const Eigen::Vector3d& x) { return double(sizing(x)); });
+    vertex_sizes = std::make_shared<Vertex_sizes>(c3t3.triangulation(),
+                                                  [sizing](const Eigen::Vector3d& x) { return double(sizing(x)); });
   else if constexpr(has_metric)
     metric = GSM::internal::Metric_field::anisotropic(
         [metric_field](const Eigen::Vector3d& x) { return Eigen::Matrix3d(metric_field(x)); });
   else if(!uniform) {
-    // the input's own grading (facet_distance, sizing criteria, small features) is the target
-    auto input_size = std::make_shared<const GSM::internal::Input_mesh_sizing>(c3t3);
-    metric = GSM::internal::Metric_field::sizing([input_size](const Eigen::Vector3d& x) { return (*input_size)(x); });
+    // the input's own grading (facet_distance, sizing criteria, small features) is the target,
+    // sampled at the vertices
+    auto field = std::make_shared<const GSM::internal::Input_mesh_sizing>(c3t3);
+    vertex_sizes = std::make_shared<Vertex_sizes>(c3t3.triangulation(),
+                                                  [field](const Eigen::Vector3d& x) { return (*field)(x); });
   }
   // The field gives shape and relative size; the vertex count gives the absolute size.
-  metric = metric.scaled(1. / GSM::internal::estimated_edge_length(c3t3, metric));
+  metric = metric.scaled(1. / GSM::internal::estimated_edge_length(c3t3, metric, vertex_sizes.get()));
 
   std::unique_ptr<tbb::global_control> thread_limit;
   if(threads > 0)
     thread_limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
                                                          std::size_t(threads));
-  GSM::internal::GSM_optimizer<C3T3, MeshDomain> optimizer(c3t3, domain, metric, options);
+  GSM::internal::GSM_optimizer<C3T3, MeshDomain> optimizer(c3t3, domain, metric, options, vertex_sizes);
   return optimizer();
 }
 
@@ -266,14 +278,16 @@ gsm_optimize(C3T3& c3t3, const MeshDomain* domain, bool boundary_fixed, const Na
  *     \cgalParamDefault{true}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{GSM_mesh_optimization::parameters::sizing_field}
- *     \cgalParamDescription{the relative target edge length `h(p)` (adaptive meshing): cells are
- *       measured after scaling by `1/h`. Only the variation of `h` matters: it is multiplied by the
+ *     \cgalParamDescription{the relative target edge length `h(p)` (adaptive meshing): each vertex
+ *       takes `h` where it is (again each time it moves), and a cell is measured after scaling by
+ *       `1/h` for the mean `h` of its vertices. Only the variation of `h` matters: it is multiplied by the
  *       constant that makes its target edges fit the number of vertices of the mesh (eq. 3.21
  *       measured with `h`), so a field proportional to the one given to `make_mesh_3()` is fine.
  *       It is called from several threads at once.}
  *     \cgalParamType{a callable `double(const Eigen::Vector3d&)`, positive and finite}
  *     \cgalParamDefault{the input mesh's local size: at each vertex the mean length of its edges,
- *       averaged with its neighbours', interpolated linearly between the input vertices; so a
+ *       averaged with its neighbours', interpolated linearly between the input vertices (so that
+ *       a vertex that moves takes the size of where it goes); so a
  *       graded mesh (from `facet_distance`, a sizing criterion, small features) keeps its grading}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{GSM_mesh_optimization::parameters::uniform_sizing}

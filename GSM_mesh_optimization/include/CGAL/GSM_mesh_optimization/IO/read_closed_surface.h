@@ -38,7 +38,7 @@ namespace IO {
  *   or has no face (`"'...' contains no faces"`);
  * - a vertex has a NaN or infinite coordinate (`"'...' has a vertex with a non-finite coordinate"`);
  * - the surface has border edges (`"the surface in '...' is open (it has border edges); a closed surface is needed"`);
- * - it self-intersects (`"the surface in '...' self-intersects"`);
+ * - it self-intersects (`"the surface in '...' self-intersects"`), unless `self_intersects` is given;
  * - it encloses no volume (`"the surface in '...' encloses no volume"`).
  *
  * \tparam TriangleMesh a model of `MutableFaceGraph` with an internal vertex point
@@ -46,11 +46,14 @@ namespace IO {
  *
  * \param fname the path of the file
  * \param tm the surface read
+ * \param self_intersects if given, a self-intersecting surface is not an error: whether it
+ *   self-intersects is written there instead (`make_mesh_3()` meshes such a surface, with the
+ *   inside its domain's ray-parity test sees, which may not be the one intended)
  * \returns the volume enclosed by `tm`, positive
  * \throws std::invalid_argument if any of the checks above fails
  */
 template <class TriangleMesh>
-double read_closed_surface(const std::string& fname, TriangleMesh& tm)
+double read_closed_surface(const std::string& fname, TriangleMesh& tm, bool* self_intersects = nullptr)
 {
   namespace PMP = CGAL::Polygon_mesh_processing;
   std::ifstream probe(fname, std::ios::binary | std::ios::ate);
@@ -72,7 +75,9 @@ double read_closed_surface(const std::string& fname, TriangleMesh& tm)
   if(!CGAL::is_closed(tm))
     throw std::invalid_argument("the surface in '" + fname +
                                 "' is open (it has border edges); a closed surface is needed");
-  if(PMP::does_self_intersect(tm)) throw std::invalid_argument("the surface in '" + fname + "' self-intersects");
+  const bool intersects = PMP::does_self_intersect(tm);
+  if(intersects && !self_intersects) throw std::invalid_argument("the surface in '" + fname + "' self-intersects");
+  if(self_intersects) *self_intersects = intersects;
   const double volume = std::abs(CGAL::to_double(PMP::volume(tm)));
   if(!(volume > 0)) throw std::invalid_argument("the surface in '" + fname + "' encloses no volume");
   return volume;

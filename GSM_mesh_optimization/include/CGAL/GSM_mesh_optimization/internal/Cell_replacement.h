@@ -212,8 +212,7 @@ protected:
   double tet_energy(const Vertex_handle& a, const Vertex_handle& b, const Vertex_handle& c,
                     const Vertex_handle& d) const
   {
-    return energy_.tetrahedron(energy_.position(a), energy_.position(b), energy_.position(c),
-                               energy_.position(d));
+    return energy_.tetrahedron(a, b, c, d);
   }
 
   void account(double old_sum, double new_sum, int cell_difference)

@@ -121,6 +121,7 @@ private:
     this->release(s.ring);
     const Vertex_handle v = tr_.tds().insert_in_edge(s.edge);
     set_bare_point(tr_, v, Bare_point(s.x[0], s.x[1], s.x[2]), true);
+    energy_.vertex_moved(v);
     c3t3_.set_dimension(v, 3);
     c3t3_.set_index(v, s.subdomain);
     std::vector<Cell_handle> star;

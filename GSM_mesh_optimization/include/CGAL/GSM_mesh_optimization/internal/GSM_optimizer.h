@@ -25,6 +25,7 @@
 #include <array>
 #include <functional>
 #include <iostream>
+#include <memory>
 #include <unordered_map>
 #include <utility>
 #include <vector>
@@ -75,9 +76,11 @@ class GSM_optimizer
   typedef typename Smoother::Ring Ring;
 
 public:
+  /// cells measured by `metric`, or by `metric`'s scale over the mean size of their
+  /// vertices if `sizing` is given
   GSM_optimizer(C3T3& c3t3, const MeshDomain* domain, const Metric_field& metric,
-                const GSM_options& options)
-    : c3t3_(c3t3), options_(options), energy_(c3t3, metric, options.energy),
+                const GSM_options& options, std::shared_ptr<Vertex_sizes<Tr>> sizing = nullptr)
+    : c3t3_(c3t3), options_(options), energy_(c3t3, metric, options.energy, std::move(sizing)),
       smoother_(c3t3, domain, energy_, options.freeze_boundary)
   {}
 

@@ -1,12 +1,14 @@
 // Copyright (c) 2026 VVM contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// The shape matching energy of the cells of a C3T3, measured in the metric,
-// and the running mean that vertex moves and flips must lower (eq. 3.9).
+// The shape matching energy of the cells of a C3T3, measured in the metric or
+// in the sizes carried by the vertices, and the running mean that vertex moves
+// and flips must lower (eq. 3.9).
 
 #ifndef CGAL_GSM_MESH_OPTIMIZATION_INTERNAL_MESH_ENERGY_H
 #define CGAL_GSM_MESH_OPTIMIZATION_INTERNAL_MESH_ENERGY_H
 
+#include <CGAL/GSM_mesh_optimization/internal/Vertex_sizes.h>
 #include <CGAL/GSM_mesh_optimization/internal/Metric_field.h>
 #include <CGAL/GSM_mesh_optimization/shape_matching_energy.h>
 #include <CGAL/GSM_mesh_optimization/tetrahedron_quality.h>
@@ -16,6 +18,7 @@
 #include <Eigen/Core>
 
 #include <array>
+#include <memory>
 #include <type_traits>
 
 namespace CGAL {
@@ -42,9 +45,13 @@ public:
   typedef typename Tr::Vertex_handle Vertex_handle;
   typedef typename Tr::Cell_handle Cell_handle;
   typedef typename Tr::Geom_traits::Point_3 Bare_point;
+  typedef Vertex_sizes<Tr> Sizes;
 
-  Mesh_energy(const C3T3& c3t3, const Metric_field& metric, Shape_matching_energy energy)
-    : c3t3_(c3t3), metric_(metric), energy_(energy)
+  /// cells measured by `metric`, or, if `sizing` is given, by `metric`'s scale over the
+  /// mean size of their vertices
+  Mesh_energy(const C3T3& c3t3, const Metric_field& metric, Shape_matching_energy energy,
+              std::shared_ptr<Sizes> sizing = nullptr)
+    : c3t3_(c3t3), metric_(metric), energy_(energy), sizing_(std::move(sizing))
   {}
 
   Eigen::Vector3d position(const Vertex_handle& v) const
@@ -54,6 +61,20 @@ public:
   static Eigen::Vector3d to_eigen(const Bare_point& p) { return internal::to_eigen(p); }
 
   const Metric_field& metric() const { return metric_; }
+  /// the map B of a cell depends on where the cell is or on its vertices
+  bool has_varying_frames() const { return sizing_ != nullptr || !metric_.is_constant(); }
+
+  /// cells take their size from their vertices
+  bool has_vertex_sizes() const { return sizing_ != nullptr; }
+  /// the size a vertex would take at `x` (only with vertex sizes)
+  double size_at(const Eigen::Vector3d& x) const { return sizing_->at(x); }
+
+  /// `v` has moved or is new: its size is taken again where it is (with vertex sizes;
+  /// thread-safe as long as no other thread reads `v`, and new vertices come in serial stages)
+  void vertex_moved(const Vertex_handle& v) const
+  {
+    if(sizing_) sizing_->update(v, position(v));
+  }
   Shape_matching_energy energy_kind() const { return energy_; }
 
   /// energy of the tetrahedron with these corners, mapped by B at its centroid
@@ -65,6 +86,16 @@ public:
       return tetrahedron_energy(energy_, B * p0, B * p1, B * p2, B * p3);
     }
     const Eigen::Matrix3d B = metric_(0.25 * (p0 + p1 + p2 + p3));
+    return tetrahedron_energy(energy_, B * p0, B * p1, B * p2, B * p3);
+  }
+
+  /// energy of the tetrahedron with these vertices where they are
+  double tetrahedron(const Vertex_handle& a, const Vertex_handle& b, const Vertex_handle& c,
+                     const Vertex_handle& d) const
+  {
+    const Eigen::Vector3d p0 = position(a), p1 = position(b), p2 = position(c), p3 = position(d);
+    if(!sizing_) return tetrahedron(p0, p1, p2, p3);
+    const Eigen::Matrix3d B = sized_frame((*sizing_)(a) + (*sizing_)(b) + (*sizing_)(c) + (*sizing_)(d));
     return tetrahedron_energy(energy_, B * p0, B * p1, B * p2, B * p3);
   }
 
@@ -93,21 +124,28 @@ public:
 
   double cell(const Cell_handle& c) const
   {
-    return tetrahedron(position(c->vertex(0)), position(c->vertex(1)), position(c->vertex(2)),
-                       position(c->vertex(3)));
+    return tetrahedron(c->vertex(0), c->vertex(1), c->vertex(2), c->vertex(3));
   }
 
   /// energy of cell `c` with the vertex `v` of it placed at `x`
   double cell(const Cell_handle& c, const Vertex_handle& v, const Eigen::Vector3d& x) const
   {
+    if(sizing_) return cell(c, v, x, frame(c, v, sizing_->at(x)));
     std::array<Eigen::Vector3d, 4> p;
     for(int i = 0; i < 4; ++i) p[i] = c->vertex(i) == v ? x : position(c->vertex(i));
     return tetrahedron(p[0], p[1], p[2], p[3]);
   }
 
-  /// the map B of cell `c` where it is: at its centroid
+  /// the map B of cell `c` with its vertex `v` moved where its size is `size_of_v` (vertex sizes)
+  Eigen::Matrix3d frame(const Cell_handle& c, const Vertex_handle& v, double size_of_v) const
+  {
+    return sized_frame(sizing_->sum(c, v, size_of_v));
+  }
+
+  /// the map B of cell `c` where it is: from its vertices' sizes, or the metric at its centroid
   Eigen::Matrix3d frame(const Cell_handle& c) const
   {
+    if(sizing_) return sized_frame(sizing_->sum(c));
     return metric_(0.25 * (position(c->vertex(0)) + position(c->vertex(1)) + position(c->vertex(2)) +
                            position(c->vertex(3))));
   }
@@ -134,6 +172,7 @@ public:
   Energy_derivatives cell_derivatives(const Cell_handle& c, const Vertex_handle& v,
                                       const Eigen::Vector3d& x) const
   {
+    if(sizing_) return cell_derivatives(c, v, x, sized_frame(sizing_->sum(c)));
     std::array<Eigen::Vector3d, 3> others;
     Eigen::Vector3d centroid = x;
     for(int i = 0, k = 0; i < 4; ++i)
@@ -157,9 +196,13 @@ public:
   }
 
 private:
+  // I / h for the mean h of four sizes given by their sum, times the metric's scale
+  Eigen::Matrix3d sized_frame(double sum_of_sizes) const { return metric_(Eigen::Vector3d::Zero()) * (4. / sum_of_sizes); }
+
   const C3T3& c3t3_;
   const Metric_field& metric_;
   Shape_matching_energy energy_;
+  std::shared_ptr<Sizes> sizing_;
 };
 
 } // namespace internal

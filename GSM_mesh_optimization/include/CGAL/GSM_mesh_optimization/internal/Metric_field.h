@@ -2,8 +2,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // The map B(x) into the isotropic space where the GSM template is the regular
-// tetrahedron of edge 1: I / a for a uniform edge length a, I / h(x) for a
-// sizing field, M(x)^{1/2} for an anisotropic metric M.
+// tetrahedron of edge 1: I / a for a uniform edge length a, M(x)^{1/2} for an
+// anisotropic metric M. (An isotropic sizing field is sampled at the vertices:
+// Vertex_sizes.h.)
 
 #ifndef CGAL_GSM_MESH_OPTIMIZATION_INTERNAL_METRIC_FIELD_H
 #define CGAL_GSM_MESH_OPTIMIZATION_INTERNAL_METRIC_FIELD_H
@@ -30,24 +31,6 @@ public:
       throw std::invalid_argument("GSM: the template edge length must be positive and finite");
     Metric_field m;
     m.constant_B_ = Eigen::Matrix3d::Identity() / a;
-    m.isotropic_ = true;
-    return m;
-  }
-
-  /// edge length `h(x)`
-  static Metric_field sizing(std::function<double(const Eigen::Vector3d&)> h)
-  {
-    Metric_field m;
-    m.B_ = [h](const Eigen::Vector3d& x) -> Eigen::Matrix3d {
-      const double s = h(x);
-      if(!(s > 0) || !std::isfinite(s)) {
-        std::ostringstream os;
-        os << "GSM: the sizing field is " << s << " at (" << x.transpose()
-           << "); it must be positive and finite";
-        throw std::invalid_argument(os.str());
-      }
-      return Eigen::Matrix3d::Identity() / s;
-    };
     m.isotropic_ = true;
     return m;
   }

@@ -119,7 +119,7 @@ public:
           r.max_neighbor_distance = (std::max)(r.max_neighbor_distance, (energy_.position(c->vertex(i)) - x).norm());
     }
     if(r.complex_cells.empty()) return false;
-    if(!energy_.metric().is_constant())
+    if(energy_.has_varying_frames())
       for(const Cell_handle& c : r.complex_cells) r.frames.push_back(energy_.frame(c));
     if(r.dimension < 3) collect_surface_facets(r);
     if(r.dimension == 2) return surface_frame(r);
@@ -139,6 +139,11 @@ public:
   double ring_energy(const Ring& r, const Eigen::Vector3d& x) const
   {
     double e = 0;
+    if(energy_.has_vertex_sizes()) { // the vertex takes its size at `x`: one lookup for the ring
+      const double size = energy_.size_at(x);
+      for(const Cell_handle& c : r.complex_cells) e += energy_.cell(c, r.v, x, energy_.frame(c, r.v, size));
+      return e;
+    }
     for(const Cell_handle& c : r.complex_cells) e += energy_.cell(c, r.v, x);
     return e;
   }
@@ -266,7 +271,11 @@ public:
   }
 
   /// moves the vertex `v` to `p`
-  void move(const Vertex_handle& v, const Bare_point& p) const { set_bare_point(tr_, v, p); }
+  void move(const Vertex_handle& v, const Bare_point& p) const
+  {
+    set_bare_point(tr_, v, p);
+    energy_.vertex_moved(v);
+  }
 
   /// the point the vertex of `r` would take for the unconstrained target `x`: `x` itself,
   /// or its projection on the vertex's surface patch or curve; false if there is none
