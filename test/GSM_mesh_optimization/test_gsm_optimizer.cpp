@@ -16,6 +16,7 @@
 
 #include <CGAL/Delaunay_triangulation_3.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Image_3.h>
 #include <CGAL/Labeled_mesh_domain_3.h>
 #include <CGAL/Mesh_complex_3_in_triangulation_3.h>
 #include <CGAL/Mesh_criteria_3.h>
@@ -1082,6 +1083,108 @@ void test_input_mesh_sizing()
   VVM_CHECK(q.min_dihedral_angle > 25 && q.n_min_dihedral_below[2] < q0.n_min_dihedral_below[2] / 10);
 }
 
+// ---------------------------------------------------------------------------
+// several subdomains, from CGAL's other domain kinds
+
+// the volume of each subdomain and the number of facets between two subdomains
+template <class C3T3>
+std::pair<std::map<int, double>, std::size_t> subdomains_and_interface(const C3T3& c3t3)
+{
+  const auto& tr = c3t3.triangulation();
+  std::map<int, double> volume;
+  for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c) {
+    std::array<Eigen::Vector3d, 4> p;
+    for(int i = 0; i < 4; ++i) p[i] = GSM::internal::to_eigen(tr.point(c, i));
+    volume[int(c3t3.subdomain_index(c))] += (p[1] - p[0]).dot((p[2] - p[0]).cross(p[3] - p[0])) / 6.;
+  }
+  std::size_t interface = 0;
+  for(auto f = c3t3.facets_in_complex_begin(); f != c3t3.facets_in_complex_end(); ++f) {
+    const auto m = tr.mirror_facet(*f);
+    interface += c3t3.is_in_complex(f->first) && c3t3.is_in_complex(m.first) &&
+                 c3t3.subdomain_index(f->first) != c3t3.subdomain_index(m.first);
+  }
+  return {volume, interface};
+}
+
+// GSM keeps every subdomain (its volume to 2%) and the interface between them (its vertices
+// slide on it), inverts nothing and lifts the worst cells
+template <class C3T3, class Domain>
+void check_two_subdomains(const char* name, C3T3& c3t3, const Domain& domain)
+{
+  const auto before = subdomains_and_interface(c3t3);
+  const GSM::Mesh_quality_statistics q0 = GSM::mesh_quality_statistics(c3t3);
+  CGAL::gsm_optimize_mesh_3(c3t3, domain);
+  const auto after = subdomains_and_interface(c3t3);
+  const GSM::Mesh_quality_statistics q = GSM::mesh_quality_statistics(c3t3);
+  std::printf("  %s (%zu vertices): subdomains", name, c3t3.triangulation().number_of_vertices());
+  for(const auto& d : after.first)
+    std::printf(" %d: volume %.4f -> %.4f,", d.first, before.first.count(d.first) ? before.first.at(d.first) : 0.,
+                d.second);
+  std::printf(" interface facets %zu -> %zu; min dihedral %.2f -> %.2f, tets under 30 deg %zu -> %zu\n",
+              before.second, after.second, q0.min_dihedral_angle, q.min_dihedral_angle, q0.n_min_dihedral_below[2],
+              q.n_min_dihedral_below[2]);
+  VVM_CHECK(complex_is_valid(c3t3));
+  VVM_CHECK(before.first.size() == 2 && after.first.size() == 2);
+  for(const auto& d : before.first)
+    VVM_CHECK(after.first.count(d.first) && std::abs(after.first.at(d.first) / d.second - 1) < 0.02);
+  VVM_CHECK(before.second > 0 && after.second > before.second / 2);
+  VVM_CHECK(q.number_of_inverted_cells == 0);
+  VVM_CHECK(q.min_dihedral_angle > 20 && q.min_dihedral_angle > q0.min_dihedral_angle + 5);
+  VVM_CHECK(q.n_min_dihedral_below[2] < q0.n_min_dihedral_below[2] / 4);
+}
+
+// subdomain 2: a torus (radii 0.6 and 0.25) inside subdomain 1, the ball of radius 1.2
+int torus_in_ball(const K::Point_3& p)
+{
+  const double d = std::sqrt(p.x() * p.x() + p.y() * p.y()) - 0.6;
+  if(d * d + p.z() * p.z() < 0.25 * 0.25) return 2;
+  return p.x() * p.x() + p.y() * p.y() + p.z() * p.z() < 1.44 ? 1 : 0;
+}
+
+template <class C3T3>
+C3T3 mesh_two_subdomains(const Implicit_domain& domain, double size)
+{
+  typedef typename C3T3::Triangulation Tr;
+  CGAL::Mesh_criteria_3<Tr> criteria(params::facet_angle = 25, params::facet_size = size,
+                                     params::facet_distance = size / 8, params::cell_radius_edge_ratio = 3,
+                                     params::cell_size = size);
+  CGAL::get_default_random() = CGAL::Random(3);
+  return CGAL::make_mesh_3<C3T3>(domain, criteria, params::no_perturb(), params::no_exude());
+}
+
+void test_several_subdomains()
+{
+  // a labelled implicit domain
+  const Implicit_domain implicit(std::function<int(const K::Point_3&)>(torus_in_ball), K::Sphere_3(CGAL::ORIGIN, 2.),
+                                 params::relative_error_bound = 1e-6);
+  Implicit_c3t3 labelled = mesh_two_subdomains<Implicit_c3t3>(implicit, 0.12);
+  check_two_subdomains("labelled implicit domain", labelled, implicit);
+
+  // the same on a triangulation made for the concurrent mesher
+#ifdef CGAL_LINKED_WITH_TBB
+  typedef CGAL::Mesh_triangulation_3<Implicit_domain, CGAL::Default, CGAL::Parallel_tag>::type Parallel_tr;
+  typedef CGAL::Mesh_complex_3_in_triangulation_3<Parallel_tr> Parallel_c3t3;
+  Parallel_c3t3 parallel = mesh_two_subdomains<Parallel_c3t3>(implicit, 0.12);
+  check_two_subdomains("Parallel_tag triangulation", parallel, implicit);
+#endif
+
+  // a labelled 3D image: a ball of label 1 around a smaller ball of label 2, 0.05 voxels
+  const std::size_t n = 52;
+  const double voxel = 0.05, centre = 0.5 * voxel * double(n - 1);
+  CGAL::Image_3 image(_createImage(n, n, n, 1, voxel, voxel, voxel, 1, WK_FIXED, SGN_UNSIGNED));
+  unsigned char* label = static_cast<unsigned char*>(image.data());
+  for(std::size_t k = 0; k < n; ++k)
+    for(std::size_t j = 0; j < n; ++j)
+      for(std::size_t i = 0; i < n; ++i) {
+        const double r = Eigen::Vector3d(voxel * double(i) - centre, voxel * double(j) - centre,
+                                         voxel * double(k) - centre).norm();
+        label[(k * n + j) * n + i] = r < 0.45 ? 2 : r < 1.1 ? 1 : 0;
+      }
+  const Implicit_domain image_domain = Implicit_domain::create_labeled_image_mesh_domain(image);
+  Implicit_c3t3 from_image = mesh_two_subdomains<Implicit_c3t3>(image_domain, 0.12);
+  check_two_subdomains("labelled 3D image", from_image, image_domain);
+}
+
 // gsm_optimize_triangulation_3 on a Delaunay triangulation of random points in a
 // box: the hull stays as it is, no cell inverts, the slivers go.
 void test_bare_triangulation()
@@ -1159,6 +1262,7 @@ int main()
   test_cube_with_features();
   test_threads_fields_and_boundary();
   test_input_mesh_sizing();
+  test_several_subdomains();
   test_bare_triangulation();
   return vvm_test::report("test_gsm_optimizer");
 }
