@@ -22,7 +22,10 @@
 #include <CGAL/Mesh_criteria_3.h>
 #include <CGAL/Mesh_triangulation_3.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
+#include <CGAL/Polyhedral_complex_mesh_domain_3.h>
 #include <CGAL/Polyhedral_mesh_domain_with_features_3.h>
+#include <CGAL/Polygon_mesh_processing/orientation.h>
+#include <CGAL/boost/graph/generators.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/make_mesh_3.h>
 
@@ -1141,11 +1144,11 @@ int torus_in_ball(const K::Point_3& p)
   return p.x() * p.x() + p.y() * p.y() + p.z() * p.z() < 1.44 ? 1 : 0;
 }
 
-template <class C3T3>
-C3T3 mesh_two_subdomains(const Implicit_domain& domain, double size)
+template <class C3T3, class Domain>
+C3T3 mesh_two_subdomains(const Domain& domain, double size)
 {
   typedef typename C3T3::Triangulation Tr;
-  CGAL::Mesh_criteria_3<Tr> criteria(params::facet_angle = 25, params::facet_size = size,
+  CGAL::Mesh_criteria_3<Tr> criteria(params::edge_size = size, params::facet_angle = 25, params::facet_size = size,
                                      params::facet_distance = size / 8, params::cell_radius_edge_ratio = 3,
                                      params::cell_size = size);
   CGAL::get_default_random() = CGAL::Random(3);
@@ -1183,6 +1186,28 @@ void test_several_subdomains()
   const Implicit_domain image_domain = Implicit_domain::create_labeled_image_mesh_domain(image);
   Implicit_c3t3 from_image = mesh_two_subdomains<Implicit_c3t3>(image_domain, 0.12);
   check_two_subdomains("labelled 3D image", from_image, image_domain);
+
+  // a polyhedral complex: the box [-1,1]^3 (subdomain 1) around the box [-0.4,0.4]^3
+  // (subdomain 2), their edges protected as features
+  typedef CGAL::Polyhedral_complex_mesh_domain_3<K> Complex_domain;
+  typedef Complex_domain::Polyhedron Polyhedron;
+  typedef CGAL::Mesh_triangulation_3<Complex_domain>::type Complex_tr;
+  typedef CGAL::Mesh_complex_3_in_triangulation_3<Complex_tr, Complex_domain::Corner_index,
+                                                  Complex_domain::Curve_index> Complex_c3t3;
+  auto box = [](double a) {
+    Polyhedron p;
+    CGAL::make_hexahedron(K::Point_3(-a, -a, -a), K::Point_3(a, -a, -a), K::Point_3(a, a, -a), K::Point_3(-a, a, -a),
+                          K::Point_3(-a, a, a), K::Point_3(-a, -a, a), K::Point_3(a, -a, a), K::Point_3(a, a, a), p);
+    CGAL::Polygon_mesh_processing::triangulate_faces(p);
+    if(!CGAL::Polygon_mesh_processing::is_outward_oriented(p)) CGAL::Polygon_mesh_processing::reverse_face_orientations(p);
+    return p;
+  };
+  const std::vector<Polyhedron> patches = {box(1.), box(0.4)};
+  const std::vector<std::pair<int, int>> sides = {{1, 0}, {2, 1}}; // (inside, outside) of each
+  Complex_domain boxes(patches.begin(), patches.end(), sides.begin(), sides.end());
+  boxes.detect_features();
+  Complex_c3t3 from_boxes = mesh_two_subdomains<Complex_c3t3>(boxes, 0.15);
+  check_two_subdomains("polyhedral complex", from_boxes, boxes);
 }
 
 // gsm_optimize_triangulation_3 on a Delaunay triangulation of random points in a
