@@ -18,6 +18,7 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
 #include <fstream>
+#include <functional>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -50,11 +51,16 @@ int main(int argc, char** argv)
         points.emplace_back(i / 6. + t, j / 6. + 0.7 * t, k / 6. - 0.4 * t);
       }
   CGAL::Delaunay_triangulation_3<K> dt(points.begin(), points.end());
-  const FF::Generated_cross_field_3<K> g =
-      FF::generate_cross_field_3(dt, FF::parameters::features_angle(60, FF::parameters::edge_length(1. / 6)));
+  // the visitor shows the smoothing's progress: the energy after each L-BFGS round
+  const std::function<void(int, double)> progress = [](int round, double energy) {
+    std::cout << "  smoothing round " << round << ": energy " << energy << "\n";
+  };
+  const FF::Generated_cross_field_3<K> g = FF::generate_cross_field_3(
+      dt, FF::parameters::features_angle(60, FF::parameters::edge_length(1. / 6, CGAL::parameters::visitor(progress))));
   const FF::Boundary_alignment_statistics a = FF::boundary_alignment_statistics(g);
   std::cout << "generated: " << g.field.points().size() << " frames, " << g.singular_edges.size()
-            << " singular edges of " << g.number_of_interior_edges << ", boundary alignment error mean "
+            << " singular edges of " << g.number_of_interior_edges << " (" << g.singular_curves.size()
+            << " curves), boundary alignment error mean "
             << a.mean << " deg, max " << a.max << " deg\n";
   std::cout << "frame at the centre:\n" << g.field.T(K::Point_3(1, 0.5, 0.5)) << "\n";
 

@@ -2,13 +2,13 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // generate_frame_field INPUT [--vertices N] [--features-angle DEG] [--out FILE.vtu]
-//                      [--frames FILE] [--singular FILE.vtu] [--json FILE] [--iterations K]
-//                      [--seed S] [--verbose]
+//                      [--frames FILE] [--singular FILE.vtu] [--curves FILE.vtu] [--json FILE] [--iterations K]
+//                      [--tolerance X] [--seed S] [--verbose]
 //
 // Meshes the closed surface INPUT with make_mesh_3 at about N vertices (sharp
 // edges protected above DEG), generates the boundary-aligned cross field on
 // it, writes the field (VTU for ParaView, and/or the text format), its
-// singular edges and a JSON report. Exit code 2 with a message on bad input or options.
+// singular edges and curves and a JSON report. Exit code 2 with a message on bad input or options.
 
 // make_mesh_3.h first: with CGAL_LINKED_WITH_TBB, Mesh_3 relies on TBB headers it includes
 #include <CGAL/make_mesh_3.h>
@@ -30,6 +30,7 @@
 #include <CGAL/Real_timer.h>
 #include <CGAL/Surface_mesh.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -56,24 +57,27 @@ struct Usage_error : std::runtime_error
 
 const char* usage =
     "usage: generate_frame_field INPUT [--vertices N] [--features-angle DEG] [--out FILE.vtu]\n"
-    "                            [--frames FILE] [--singular FILE.vtu] [--json FILE] [--iterations K]\n"
-    "                            [--seed S] [--verbose]\n"
+    "                            [--frames FILE] [--singular FILE.vtu] [--curves FILE.vtu] [--json FILE] [--iterations K]\n"
+    "                            [--tolerance X] [--seed S] [--verbose]\n"
     "  INPUT             closed triangle surface (OFF, OBJ, PLY, STL, ...)\n"
     "  --vertices N      about N mesh vertices (default 10000)\n"
     "  --features-angle  protect and align with the edges sharper than DEG degrees (default 0: none)\n"
     "  --out FILE.vtu    the field for ParaView (axis_1..3 point arrays)\n"
     "  --frames FILE     the field in the VVM frame field text format\n"
     "  --singular FILE   the singular edges as VTU lines\n"
+    "  --curves FILE     the singular curves (chains of singular edges) as VTU polylines\n"
     "  --json FILE       the report (also printed on stdout)\n"
-    "  --iterations K    diffuse-and-project rounds (default 10)\n"
+    "  --iterations K    at most K smoothing rounds (default 100)\n"
+    "  --tolerance X     stop smoothing after a round lowering the energy by less than X times it (default 1e-4)\n"
     "  --seed S          random seed of make_mesh_3 (default 0)\n";
 
 struct Options
 {
-  std::string input, vtu, frames, singular, json;
+  std::string input, vtu, frames, singular, curves, json;
   long vertices = 10000;
   double features_angle = 0;
-  int iterations = 10;
+  int iterations = 100;
+  double tolerance = 1e-4;
   unsigned seed = 0;
   bool verbose = false;
 };
@@ -109,6 +113,9 @@ Options parse(int argc, char** argv)
       const double k = parse_number(a, value());
       if(!(k >= 0) || k != std::floor(k) || k > 1e6) throw Usage_error("--iterations must be a non-negative integer");
       o.iterations = int(k);
+    } else if(a == "--tolerance") {
+      o.tolerance = parse_number(a, value());
+      if(!(o.tolerance >= 0)) throw Usage_error("--tolerance must be non-negative");
     } else if(a == "--seed") {
       const double s = parse_number(a, value());
       if(!(s >= 0) || s != std::floor(s) || s > 4e9) throw Usage_error("--seed must be a non-negative integer");
@@ -116,6 +123,7 @@ Options parse(int argc, char** argv)
     } else if(a == "--out") o.vtu = value();
     else if(a == "--frames") o.frames = value();
     else if(a == "--singular") o.singular = value();
+    else if(a == "--curves") o.curves = value();
     else if(a == "--json") o.json = value();
     else if(a == "--verbose") o.verbose = true;
     else if(a == "--help" || a == "-h") {
@@ -189,7 +197,8 @@ int run(const Options& o)
   CGAL::Real_timer timer;
   timer.start();
   const FF::Generated_cross_field_3<K> g = FF::generate_cross_field_3(
-      c3t3, CGAL::parameters::number_of_iterations(o.iterations).verbose(o.verbose));
+      c3t3, FF::parameters::smoothing_tolerance(
+             o.tolerance, CGAL::parameters::number_of_iterations(o.iterations).verbose(o.verbose)));
   timer.stop();
   const FF::Boundary_alignment_statistics a = FF::boundary_alignment_statistics(g);
 
@@ -208,7 +217,19 @@ int run(const Options& o)
     if(!os) throw std::runtime_error("cannot write '" + o.singular + "'");
     FF::IO::write_edges_VTU(os, g.field.points(), g.singular_edges);
   }
+  if(!o.curves.empty()) {
+    std::ofstream os(o.curves);
+    if(!os) throw std::runtime_error("cannot write '" + o.curves + "'");
+    FF::IO::write_polylines_VTU(os, g.field.points(), g.singular_curves);
+  }
   total.stop();
+  double longest_curve = 0, curves_length = 0;
+  std::size_t closed_curves = 0;
+  for(const FF::Singular_curve& c : g.singular_curves) {
+    longest_curve = (std::max)(longest_curve, c.length);
+    curves_length += c.length;
+    closed_curves += c.is_closed();
+  }
 
   std::ostringstream js;
   js.precision(6);
@@ -223,10 +244,21 @@ int run(const Options& o)
      << ", \"boundary_alignment_error_mean_deg\": " << N{a.mean}
      << ", \"boundary_alignment_error_p95_deg\": " << N{a.p95}
      << ", \"boundary_alignment_error_max_deg\": " << N{a.max}
+     << ", \"vertex_alignment_error_mean_deg\": " << N{a.vertex_mean}
+     << ", \"vertex_alignment_error_p95_deg\": " << N{a.vertex_p95}
+     << ", \"vertex_alignment_error_max_deg\": " << N{a.vertex_max}
+     << ", \"facet_normal_deviation_mean_deg\": " << N{a.normal_deviation_mean}
+     << ", \"facet_normal_deviation_p95_deg\": " << N{a.normal_deviation_p95}
+     << ", \"n_singular_curves\": " << g.singular_curves.size()
+     << ", \"n_closed_singular_curves\": " << closed_curves
+     << ", \"n_dead_ends\": " << g.number_of_dead_ends
+     << ", \"singular_curves_length\": " << N{curves_length}
+     << ", \"longest_singular_curve\": " << N{longest_curve}
      << ", \"smoothness_energy\": " << N{g.smoothness_energy}
      << ", \"smoothness_energy_per_edge\": " << N{g.smoothness_energy / double(g.number_of_edges)}
      << ", \"solver_iterations\": " << g.solver_iterations << ", \"solver_error\": " << N{g.solver_error}
      << ", \"features_angle\": " << N{o.features_angle} << ", \"iterations\": " << o.iterations
+     << ", \"smoothing_rounds\": " << g.round_energies.size() - 1
      << ", \"mesh_size\": " << N{size} << ", \"mesh_time_s\": " << N{mesh_timer.time()}
      << ", \"time_s\": " << N{timer.time()} << ", \"total_time_s\": " << N{total.time()} << "}\n";
   std::cout << js.str();

@@ -4,8 +4,10 @@
 // Frame fields: the spherical-harmonic machinery (rotation, projection), the
 // frame check, the dissertation's closed-form fields against their formulas,
 // the grid lookup of discrete fields against brute force, the text format,
-// the generated cross field on a cube (Triangulation_3 and C3T3) and a
-// cylinder, and the singular edge detector against winding numbers.
+// the generated cross field on a cube (Triangulation_3 and C3T3), a cylinder
+// and a ball (the smoothing's gradient against finite differences, its energy
+// never increasing, the boundary axes kept exactly, singular curves from cap
+// to cap, no dead end), and the singular edge detector against winding numbers.
 
 #include "test_utilities.h"
 
@@ -18,6 +20,7 @@
 #include <CGAL/Frame_fields/dissertation_frame_fields.h>
 #include <CGAL/Frame_fields/generate_cross_field_3.h>
 #include <CGAL/Frame_fields/internal/L4_spherical_harmonics.h>
+#include <CGAL/Frame_fields/internal/Cross_field_smoother.h>
 #include <CGAL/Frame_fields/internal/Cross_field_solver.h>
 #include <CGAL/Frame_fields/internal/Indexed_tetrahedral_mesh.h>
 #include <CGAL/Frame_fields/internal/Singular_edges.h>
@@ -33,6 +36,7 @@
 
 #include <Eigen/Geometry>
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <limits>
@@ -578,9 +582,9 @@ void test_corners_and_solver()
 
   // CG stopped after one iteration: the sparse LDLT gives the same field
   FFI::Cross_field_solver solver(mesh.xyz, mesh.cells, mesh.boundary_facets, mesh.feature_edges);
-  const FFI::Cross_field_solution cg = solver.solve(2, false);
+  const FFI::Cross_field_solution cg = solver.solve(2, 1e-4, false);
   solver.set_max_iterations(1);
-  const FFI::Cross_field_solution direct = solver.solve(2, false);
+  const FFI::Cross_field_solution direct = solver.solve(2, 1e-4, false);
   double worst = 0;
   for(std::size_t v = 0; v < cg.vertex_frames.size(); ++v)
     worst = std::max(worst, cross_distance(cg.vertex_frames[v], direct.vertex_frames[v]));
@@ -595,12 +599,10 @@ void test_corners_and_solver()
   VVM_CHECK(g.solver_iterations > 0 && g.solver_error <= 1e-8 && !g.direct_solver);
 }
 
-void test_cylinder()
+// radius 1, z in [-1, 1]: rings of n_around points on the side and the caps, jittered inside
+std::vector<Point> cylinder_points(int n_around, int n_z, int n_r, CGAL::Random& r)
 {
-  // radius 1, z in [-1, 1]: rings of 32 points on the side and the caps, jittered inside
-  CGAL::Random r(17);
   std::vector<Point> points;
-  const int n_around = 32, n_z = 12, n_r = 6;
   for(int k = 0; k <= n_z; ++k) {
     const double z = -1 + 2. * k / n_z;
     const bool cap = k == 0 || k == n_z;
@@ -616,41 +618,168 @@ void test_cylinder()
     }
     points.emplace_back(cap ? 0 : r.get_double(-0.02, 0.02), 0, z);
   }
+  return points;
+}
+
+void test_cylinder()
+{
+  CGAL::Random r(17);
+  const int n_around = 96;
+  const std::vector<Point> points = cylinder_points(n_around, 12, 8, r);
   const Delaunay dt(points.begin(), points.end());
   const FF::Generated_cross_field_3<K> g = FF::generate_cross_field_3(dt);
   const FF::Boundary_alignment_statistics a = FF::boundary_alignment_statistics(g);
   // side vertices (not on the rims): one axis on the radial normal, one on the cylinder's axis
   double worst_normal = 0, worst_axis = 0, worst_cap = 0, worst_rim = 0;
   std::size_t side = 0, caps = 0, rims = 0;
+  auto on_side = [](const Point& p) { return std::abs(std::hypot(p.x(), p.y()) - 1) < 1e-9; };
+  auto on_cap = [](const Point& p) { return std::abs(std::abs(p.z()) - 1) < 1e-9; };
   for(std::size_t v = 0; v < g.field.points().size(); ++v) {
     const Point& p = g.field.points()[v];
     const Eigen::Matrix3d& T = g.field.frames()[v];
-    const double rho = std::hypot(p.x(), p.y());
-    if(std::abs(rho - 1) < 1e-9 && std::abs(std::abs(p.z()) - 1) < 1e-9) {
+    if(on_side(p) && on_cap(p)) {
       ++rims; // a sharp edge: one axis along the circle
       worst_rim = std::max(worst_rim, FF::angle_to_nearest_axis(T, Eigen::Vector3d(-p.y(), p.x(), 0)));
-    } else if(std::abs(rho - 1) < 1e-9) {
+    } else if(on_side(p)) {
       ++side;
       worst_normal = std::max(worst_normal, FF::angle_to_nearest_axis(T, Eigen::Vector3d(p.x(), p.y(), 0)));
       worst_axis = std::max(worst_axis, FF::angle_to_nearest_axis(T, Eigen::Vector3d::UnitZ()));
-    } else if(std::abs(std::abs(p.z()) - 1) < 1e-9 && rho < 1 - 1e-9) {
+    } else if(on_cap(p)) {
       ++caps;
       worst_cap = std::max(worst_cap, FF::angle_to_nearest_axis(T, Eigen::Vector3d::UnitZ()));
     }
   }
+  // the side facets (no vertex on a rim): the field's error there
+  double side_facets_worst = 0;
+  for(std::size_t i = 0; i < g.boundary_facets.size(); ++i) {
+    bool side_facet = true;
+    for(std::size_t v : g.boundary_facets[i]) side_facet = side_facet && on_side(g.field.points()[v]) && !on_cap(g.field.points()[v]);
+    if(side_facet) side_facets_worst = std::max(side_facets_worst, a.facet_errors[i]);
+  }
+  // every singular curve runs from one cap to the other, along the axis: its ends on
+  // opposite caps, the line through them within 10 deg of the axis, its vertices within a
+  // quarter of the radius (two interior rings) of the vertical through its start
+  std::size_t cap_to_cap = 0;
+  double worst_straightness = 0, worst_tilt = 0;
+  for(const FF::Singular_curve& c : g.singular_curves) {
+    const Point& p = g.field.points()[c.vertices.front()];
+    const Point& q = g.field.points()[c.vertices.back()];
+    if(on_cap(p) && on_cap(q) && p.z() * q.z() < 0) ++cap_to_cap;
+    worst_tilt = std::max(worst_tilt, FF::angle_to_nearest_axis(Eigen::Matrix3d::Identity(),
+                                                                Eigen::Vector3d(q.x() - p.x(), q.y() - p.y(), q.z() - p.z())));
+    for(std::size_t v : c.vertices) {
+      const Point& x = g.field.points()[v];
+      worst_straightness = std::max(worst_straightness, std::hypot(x.x() - p.x(), x.y() - p.y()));
+    }
+  }
   std::cout << "cylinder: " << side << " side and " << caps << " cap vertices; side normal error " << worst_normal
-            << " deg, side axis error " << worst_axis << " deg, cap error " << worst_cap
-            << " deg, rim tangent error " << worst_rim << " deg; boundary facets mean " << a.mean << ", p95 " << a.p95 << " deg; " << g.singular_edges.size()
-            << " singular edges, " << g.feature_edges.size() << " sharp edges\n";
-  VVM_CHECK(side > 300 && caps > 150 && rims == std::size_t(2 * n_around));
-  VVM_CHECK(worst_rim < 1e-6);
+            << " deg, side axis error " << worst_axis << " deg, cap error " << worst_cap << " deg, rim tangent error "
+            << worst_rim << " deg; side facets' worst error " << side_facets_worst << " deg; boundary facets mean "
+            << a.mean << ", p95 " << a.p95 << " deg; " << g.singular_edges.size() << " singular edges in "
+            << g.singular_curves.size() << " curves (" << cap_to_cap << " from cap to cap, tilted by at most "
+            << worst_tilt << " deg, farthest vertex " << worst_straightness << " from the vertical through its start), " << g.number_of_dead_ends
+            << " dead ends; " << g.feature_edges.size() << " sharp edges\n";
+  VVM_CHECK(side > 1000 && caps > 500 && rims == std::size_t(2 * n_around));
+  VVM_CHECK(worst_rim < 1e-6 * 180 / pi); // 1e-6 rad
   VVM_CHECK_EQUAL(g.feature_edges.size(), std::size_t(2 * n_around)); // the two rims
-  // a side vertex's normal averages its facets', which are 11.25 deg apart: within half of that
-  VVM_CHECK(worst_normal < 5.7);
-  VVM_CHECK(worst_cap < 1e-6);
+  // a side vertex's normal averages its facets', which are 3.75 deg apart: within half of that
+  VVM_CHECK(worst_normal < 1.9);
+  VVM_CHECK(worst_cap < 1e-6 * 180 / pi);
   // ... the twist about it is the smooth solution's: along the axis
-  VVM_CHECK(worst_axis < 3);
-  VVM_CHECK(a.mean < 3);
+  VVM_CHECK(worst_axis < 1);
+  VVM_CHECK(side_facets_worst < 1);
+  VVM_CHECK(!g.singular_curves.empty());
+  VVM_CHECK_EQUAL(cap_to_cap, g.singular_curves.size());
+  VVM_CHECK(worst_tilt < 10);
+  VVM_CHECK(worst_straightness < 0.25);
+  VVM_CHECK_EQUAL(g.number_of_dead_ends, std::size_t(0));
+}
+
+// The smoothing on a ball: the gradient of the energy over the rotations against
+// finite differences, the energy reported to the visitor never increasing, each
+// boundary frame keeping an axis on its normal, no singular curve ending inside.
+void test_ball_smoothing()
+{
+  CGAL::Random r(29);
+  std::vector<Point> points;
+  for(int i = 0; i < 600; ++i) { // on the unit sphere, and inside
+    const Eigen::Vector3d u = Eigen::Vector3d(r.get_double(-1, 1), r.get_double(-1, 1), r.get_double(-1, 1));
+    if(u.norm() < 0.1 || u.norm() > 1) { --i; continue; }
+    const Eigen::Vector3d p = u.normalized();
+    points.emplace_back(p.x(), p.y(), p.z());
+  }
+  for(int i = 0; i < 1500; ++i) {
+    const Eigen::Vector3d u(r.get_double(-1, 1), r.get_double(-1, 1), r.get_double(-1, 1));
+    if(u.norm() < 0.9) points.emplace_back(u.x(), u.y(), u.z());
+  }
+  const Delaunay dt(points.begin(), points.end());
+
+  // the gradient, at frames away from the optimum and rotations away from 0
+  const auto mesh = FFI::indexed_mesh(dt, 0.);
+  FFI::Cross_field_solver solver(mesh.xyz, mesh.cells, mesh.boundary_facets, mesh.feature_edges);
+  std::vector<std::vector<std::size_t>> neighbours(mesh.xyz.size());
+  for(const auto& c : mesh.cells)
+    for(std::size_t i : c)
+      for(std::size_t j : c)
+        if(i != j && std::find(neighbours[i].begin(), neighbours[i].end(), j) == neighbours[i].end())
+          neighbours[i].push_back(j);
+  const FFI::Cross_field_smoother smoother(neighbours, solver.constrained_axes());
+  std::vector<Eigen::Matrix3d> start(mesh.xyz.size());
+  for(std::size_t v = 0; v < start.size(); ++v) {
+    const Eigen::Vector3d& a = solver.constrained_axes()[v];
+    start[v] = a.squaredNorm() > 0 ? Eigen::Matrix3d(Eigen::Quaterniond::FromTwoVectors(Eigen::Vector3d::UnitZ(), a))
+                                   : random_rotation(r);
+  }
+  Eigen::VectorXd x(smoother.number_of_unknowns());
+  for(Eigen::Index i = 0; i < x.size(); ++i) x[i] = r.get_double(-1.5, 1.5);
+  Eigen::VectorXd grad, unused;
+  std::vector<FFI::SH_vector> c;
+  const double e0 = smoother.energy_and_gradient(start, x, grad, c);
+  double worst_gradient = 0;
+  for(int k = 0; k < 40; ++k) {
+    const Eigen::Index i = Eigen::Index(r.get_int(0, int(x.size())));
+    const double h = 1e-5;
+    Eigen::VectorXd xp = x, xm = x;
+    xp[i] += h;
+    xm[i] -= h;
+    const double fd = (smoother.energy_and_gradient(start, xp, unused, c) -
+                       smoother.energy_and_gradient(start, xm, unused, c)) / (2 * h);
+    worst_gradient = std::max(worst_gradient, std::abs(fd - grad[i]) / (1 + std::abs(fd)));
+  }
+  std::cout << "ball smoothing: energy " << e0 << " at random rotations, gradient within " << worst_gradient
+            << " of central differences\n";
+  VVM_CHECK(worst_gradient < 1e-5);
+
+  // generate_cross_field_3: the visitor sees every round, the energy never increases
+  std::vector<std::pair<int, double>> seen;
+  const FF::Generated_cross_field_3<K> g = FF::generate_cross_field_3(
+      dt, FF::parameters::smoothing_tolerance(1e-6, CGAL::parameters::visitor(
+              std::function<void(int, double)>([&](int round, double e) { seen.emplace_back(round, e); }))));
+  const FF::Boundary_alignment_statistics a = FF::boundary_alignment_statistics(g);
+  bool increasing = false;
+  for(std::size_t i = 1; i < g.round_energies.size(); ++i) increasing = increasing || g.round_energies[i] > g.round_energies[i - 1];
+  bool visitor_ok = seen.size() + 1 == g.round_energies.size();
+  for(std::size_t i = 0; visitor_ok && i < seen.size(); ++i)
+    visitor_ok = seen[i].first == int(i) + 1 && seen[i].second == g.round_energies[i + 1];
+  std::cout << "ball: " << g.round_energies.size() - 1 << " smoothing rounds, energy " << g.round_energies.front()
+            << " -> " << g.round_energies.back() << "; boundary vertex error max " << a.vertex_max * pi / 180
+            << " rad over " << a.boundary_vertices.size() << " vertices; facets mean " << a.mean << " deg (surface turning "
+            << a.normal_deviation_mean << "); " << g.singular_edges.size() << " singular edges in "
+            << g.singular_curves.size() << " curves, " << g.number_of_dead_ends << " dead ends\n";
+  VVM_CHECK(g.round_energies.size() >= 3); // rounds happened
+  VVM_CHECK(!increasing);
+  VVM_CHECK(g.round_energies.back() < 0.99 * g.round_energies.front()); // and lowered the energy
+  VVM_CHECK(visitor_ok);
+  VVM_CHECK_CLOSE(g.smoothness_energy, g.round_energies.back(), 1e-12);
+  VVM_CHECK_EQUAL(a.boundary_vertices.size(), std::size_t(600));
+  VVM_CHECK(a.vertex_max * pi / 180 < 1e-6);
+  VVM_CHECK(!g.singular_curves.empty());
+  VVM_CHECK_EQUAL(g.number_of_dead_ends, std::size_t(0));
+  std::size_t edges_in_curves = 0;
+  for(const FF::Singular_curve& sc : g.singular_curves) edges_in_curves += sc.vertices.size() - 1;
+  VVM_CHECK_EQUAL(edges_in_curves, g.singular_edges.size());
+  VVM_CHECK(throws_invalid_argument([&] {
+    FF::generate_cross_field_3(dt, FF::parameters::smoothing_tolerance(-1.)); }, "smoothing_tolerance"));
 }
 
 // The detector on a field with a known singular line: the frame of each cell is the
@@ -708,6 +837,42 @@ void test_singular_edge_detector()
   VVM_CHECK_EQUAL(report.number_of_interior_edges, interior);
 }
 
+// Chaining singular edges into curves, on a hand-made graph: a chain between two
+// boundary vertices, a branching (Y), a loop, and a chain ending inside (a dead end).
+void test_singular_curves()
+{
+  std::vector<Eigen::Vector3d> xyz;
+  for(int i = 0; i < 13; ++i) xyz.emplace_back(double(i * i), 0, 0); // |x_i - x_j| = |i^2 - j^2|
+  std::vector<char> on_boundary(13, 0);
+  for(int v : {0, 3, 4, 6, 7, 11}) on_boundary[std::size_t(v)] = 1;
+  const std::vector<std::array<std::size_t, 2>> edges = {{{2, 3}}, {{0, 1}}, {{1, 2}},           // chain 0-1-2-3
+                                                         {{4, 5}}, {{5, 6}}, {{5, 7}},           // Y at 5
+                                                         {{8, 9}}, {{9, 10}}, {{8, 10}},         // loop
+                                                         {{11, 12}}};                           // dead end at 12
+  const FFI::Singular_curves_report r = FFI::singular_curves(edges, on_boundary, xyz);
+  std::multiset<std::vector<std::size_t>> curves;
+  double length = 0;
+  std::size_t closed = 0;
+  for(const FF::Singular_curve& c : r.curves) {
+    std::vector<std::size_t> v = c.vertices;
+    if(!c.is_closed() && v.front() > v.back()) std::reverse(v.begin(), v.end());
+    curves.insert(v);
+    length += c.length;
+    closed += c.is_closed();
+  }
+  std::cout << "singular curves: " << r.curves.size() << " curves, " << closed << " closed, " << r.number_of_dead_ends
+            << " dead ends, total length " << length << "\n";
+  VVM_CHECK_EQUAL(r.curves.size(), std::size_t(6));
+  VVM_CHECK(curves.count({0, 1, 2, 3}) == 1);
+  VVM_CHECK(curves.count({4, 5}) == 1 && curves.count({5, 6}) == 1 && curves.count({5, 7}) == 1);
+  VVM_CHECK(curves.count({11, 12}) == 1);
+  VVM_CHECK_EQUAL(closed, std::size_t(1));
+  VVM_CHECK_EQUAL(r.number_of_dead_ends, std::size_t(1));
+  double expected = 0;
+  for(const auto& e : edges) expected += std::abs(double(e[0] * e[0]) - double(e[1] * e[1]));
+  VVM_CHECK_CLOSE(length, expected, 1e-12);
+}
+
 int main()
 {
   test_spherical_harmonics();
@@ -718,6 +883,8 @@ int main()
   test_cube();
   test_corners_and_solver();
   test_cylinder();
+  test_ball_smoothing();
   test_singular_edge_detector();
+  test_singular_curves();
   return vvm_test::report("test_frame_fields");
 }

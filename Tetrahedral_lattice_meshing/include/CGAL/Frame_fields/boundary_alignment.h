@@ -1,8 +1,13 @@
 // Copyright (c) 2026 VVM contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// How well a generated cross field follows the boundary: for each boundary
-// facet, the angle between its normal and the nearest axis of the field there.
+// How well a generated cross field follows the boundary, seen three ways: for
+// each boundary facet, the angle between its normal and the nearest axis of the
+// field there (what a mesher gets); for each boundary vertex, the angle between
+// the direction it was constrained to and the nearest axis of its frame (the
+// constraint); for each facet, the angle between its normal and the mean of its
+// vertices' normals (how much the surface turns between vertices, which no field
+// with one frame per vertex on the vertex normals can follow).
 
 #ifndef CGAL_FRAME_FIELDS_BOUNDARY_ALIGNMENT_H
 #define CGAL_FRAME_FIELDS_BOUNDARY_ALIGNMENT_H
@@ -14,10 +19,13 @@
 #include <CGAL/number_type_config.h> // CGAL_PI
 
 #include <Eigen/Core>
+#include <Eigen/Eigenvalues>
 
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <tuple>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -36,7 +44,36 @@ struct Boundary_alignment_statistics
   double mean = 0;  ///< area-weighted mean
   double p95 = 0;   ///< 95th percentile over facets (each facet counted once)
   double max = 0;   ///< largest
+
+  /// the vertices of the boundary facets, in increasing order
+  std::vector<std::size_t> boundary_vertices;
+  /// per boundary vertex, the angle between its constrained axis
+  /// (`Generated_cross_field_3::constrained_axes`) and the nearest axis of its frame
+  std::vector<double> vertex_errors;
+  double vertex_mean = 0; ///< mean of `vertex_errors`
+  double vertex_p95 = 0;  ///< their 95th percentile
+  double vertex_max = 0;  ///< the largest
+
+  /// per boundary facet, the angle between its normal and the mean of its three vertices'
+  /// normals (each the principal direction of the area-weighted normals of its boundary
+  /// facets; the facet's own normal for a vertex of a sharp edge): the error a field
+  /// aligned with the vertex normals and interpolated perfectly would still have
+  std::vector<double> facet_normal_deviations;
+  double normal_deviation_mean = 0; ///< area-weighted mean of `facet_normal_deviations`
+  double normal_deviation_p95 = 0;  ///< their 95th percentile
 };
+
+namespace internal {
+
+// the 95th percentile and the largest of `x` (0 if empty)
+inline std::pair<double, double> p95_and_max(std::vector<double> x)
+{
+  if(x.empty()) return {0., 0.};
+  std::sort(x.begin(), x.end());
+  return {x[std::min(x.size() - 1, std::size_t(std::ceil(0.95 * double(x.size()))) - 1)], x.back()};
+}
+
+} // namespace internal
 
 /// \ingroup PkgTetrahedralLatticeMeshingFrameFields
 /// the angle (degrees, in [0, 54.7]) between the direction `n` and the nearest of the
@@ -86,12 +123,49 @@ Boundary_alignment_statistics boundary_alignment_statistics(const Generated_cros
     area += s.facet_areas[i];
   }
   if(area > 0) s.mean /= area;
-  if(n > 0) {
-    std::vector<double> sorted = s.facet_errors;
-    std::sort(sorted.begin(), sorted.end());
-    s.p95 = sorted[std::min(n - 1, std::size_t(std::ceil(0.95 * double(n))) - 1)];
-    s.max = sorted.back();
+  std::tie(s.p95, s.max) = internal::p95_and_max(s.facet_errors);
+
+  // the vertex view: the constraint alone
+  std::vector<Eigen::Matrix3d> normal_tensor(frames.size(), Eigen::Matrix3d::Zero());
+  for(std::size_t i = 0; i < n; ++i) {
+    const auto& f = g.boundary_facets[i];
+    const Eigen::Vector3d N = (xyz(f[1]) - xyz(f[0])).cross(xyz(f[2]) - xyz(f[0]));
+    for(std::size_t v : f) {
+      s.boundary_vertices.push_back(v);
+      if(N.norm() > 0) normal_tensor[v] += N * N.transpose() / (2 * N.norm());
+    }
   }
+  std::sort(s.boundary_vertices.begin(), s.boundary_vertices.end());
+  s.boundary_vertices.erase(std::unique(s.boundary_vertices.begin(), s.boundary_vertices.end()),
+                            s.boundary_vertices.end());
+  for(std::size_t v : s.boundary_vertices) {
+    const Eigen::Vector3d a = v < g.constrained_axes.size() ? g.constrained_axes[v] : Eigen::Vector3d::Zero();
+    s.vertex_errors.push_back(a.squaredNorm() > 0 ? angle_to_nearest_axis(frames[v], a) : 90.);
+  }
+  for(double e : s.vertex_errors) s.vertex_mean += e;
+  if(!s.vertex_errors.empty()) s.vertex_mean /= double(s.vertex_errors.size());
+  std::tie(s.vertex_p95, s.vertex_max) = internal::p95_and_max(s.vertex_errors);
+
+  // the geometry: facet normals against their vertices' normals
+  std::vector<Eigen::Vector3d> vertex_normal(frames.size(), Eigen::Vector3d::Zero());
+  std::vector<char> on_sharp_edge(frames.size(), 0);
+  for(const auto& e : g.feature_edges) on_sharp_edge[e[0]] = on_sharp_edge[e[1]] = 1;
+  for(std::size_t v : s.boundary_vertices)
+    if(normal_tensor[v].trace() > 0)
+      vertex_normal[v] = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(normal_tensor[v]).eigenvectors().col(2);
+  s.facet_normal_deviations.resize(n);
+  for(std::size_t i = 0; i < n; ++i) {
+    const auto& f = g.boundary_facets[i];
+    const Eigen::Vector3d N = (xyz(f[1]) - xyz(f[0])).cross(xyz(f[2]) - xyz(f[0]));
+    Eigen::Vector3d m = Eigen::Vector3d::Zero();
+    for(std::size_t v : f) // a vertex of a sharp edge has no normal: it counts as the facet's
+      m += on_sharp_edge[v] ? Eigen::Vector3d(N.normalized()) : (vertex_normal[v].dot(N) < 0 ? -1. : 1.) * vertex_normal[v];
+    const double c = N.norm() > 0 && m.norm() > 0 ? std::abs(N.normalized().dot(m.normalized())) : 1.;
+    s.facet_normal_deviations[i] = std::acos((std::min)(1., c)) * 180 / CGAL_PI;
+    s.normal_deviation_mean += s.facet_normal_deviations[i] * s.facet_areas[i];
+  }
+  if(area > 0) s.normal_deviation_mean /= area;
+  s.normal_deviation_p95 = internal::p95_and_max(s.facet_normal_deviations).first;
   return s;
 }
 

@@ -8,6 +8,7 @@
 #define CGAL_FRAME_FIELDS_GENERATE_CROSS_FIELD_3_H
 
 #include <CGAL/Frame_fields/Discrete_frame_field_3.h>
+#include <CGAL/Frame_fields/Singular_curve.h>
 #include <CGAL/Frame_fields/internal/Cross_field_solver.h>
 #include <CGAL/Frame_fields/internal/Indexed_tetrahedral_mesh.h>
 #include <CGAL/Frame_fields/parameters.h>
@@ -20,6 +21,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <functional>
 #include <iostream>
 #include <stdexcept>
 #include <string>
@@ -46,15 +48,28 @@ struct Generated_cross_field_3
   std::vector<std::array<std::size_t, 3>> boundary_facets;
   /// the sharp edges the frames were aligned with
   std::vector<std::array<std::size_t, 2>> feature_edges;
+  /// per vertex, the unit direction its frame keeps as an axis: the boundary normal, the
+  /// sharp edge's tangent, or at a corner the normal of its largest group of nearly
+  /// parallel facets; zero for a free (interior) vertex
+  std::vector<Eigen::Vector3d> constrained_axes;
   /// the interior edges around which the cell frames do not match (the holonomy of the
   /// cube-symmetry matchings of consecutive cells is not the identity)
   std::vector<std::array<std::size_t, 2>> singular_edges;
+  /// the singular edges chained into curves, which end where other than two singular
+  /// edges meet (an end on the boundary, or a branching), or close into loops
+  std::vector<Singular_curve> singular_curves;
+  /// the ends of singular curves at a vertex inside the domain that no other singular
+  /// edge meets: a smooth field has none
+  std::size_t number_of_dead_ends = 0;
   /// the edges whose ring of cells closes inside the domain
   std::size_t number_of_interior_edges = 0;
   /// all edges of the mesh's cells
   std::size_t number_of_edges = 0;
   /// \f$ \sum_{edges\ ij} |c_i - c_j|^2 \f$ over the unit SH vectors \f$ c \f$ of the frames
   double smoothness_energy = 0;
+  /// the smoothness energy after the projection of the least-squares solution, then after
+  /// each smoothing round (never increasing; its last value is `smoothness_energy`)
+  std::vector<double> round_energies;
   /// the vertices on sharp edges where no axis could follow an edge (corners, ends of
   /// feature curves, turns of more than 45 degrees): one axis follows the normal of their
   /// largest group of nearly parallel boundary facets
@@ -85,7 +100,10 @@ generate_cross_field(const Indexed_tetrahedral_mesh<Point_3>& mesh, const NamedP
  * frames with one axis on the (area-weighted) normal, and the vertices of sharp edges
  * to frames with one axis on the edge; a sparse least-squares solve for smoothness
  * (\f$ \sum_{ij} |c_i - c_j|^2 \f$ over the mesh edges); the projection of each vertex
- * onto its nearest valid frame; then rounds of diffusion and projection. At corners
+ * onto its nearest valid frame; then the minimisation of the same energy over the frames
+ * themselves (the octahedral variety), by L-BFGS on per-vertex rotations, the constrained
+ * frames turning only about their axis, in rounds until a round lowers the energy by less
+ * than `Frame_fields::parameters::smoothing_tolerance` times it. At corners
  * (the vertices of sharp edges where the edges end, meet, or turn by more than 45
  * degrees), where no single edge gives the axis, one axis follows the mean normal of
  * the largest group (by area) of nearly parallel facets around the vertex.
@@ -101,9 +119,19 @@ generate_cross_field(const Indexed_tetrahedral_mesh<Point_3>& mesh, const NamedP
  *
  * \cgalNamedParamsBegin
  *   \cgalParamNBegin{number_of_iterations}
- *     \cgalParamDescription{the number of diffuse-and-project rounds after the least-squares solve}
+ *     \cgalParamDescription{the largest number of smoothing rounds (of at most 25 L-BFGS iterations each)}
  *     \cgalParamType{`int`}
- *     \cgalParamDefault{10}
+ *     \cgalParamDefault{100}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{Frame_fields::parameters::smoothing_tolerance}
+ *     \cgalParamDescription{the smoothing stops after the first round lowering the energy by less than this fraction}
+ *     \cgalParamType{`double`}
+ *     \cgalParamDefault{1e-4}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{visitor}
+ *     \cgalParamDescription{called after each smoothing round as `visitor(round, energy)`, rounds counted from 1}
+ *     \cgalParamType{a callable `void(int, double)`}
+ *     \cgalParamDefault{none}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{Frame_fields::parameters::edge_length}
  *     \cgalParamDescription{the length of the three axes of every frame}
@@ -152,9 +180,19 @@ generate_cross_field_3(const Mesh_complex_3_in_triangulation_3<Tr, CornerIndex, 
  *
  * \cgalNamedParamsBegin
  *   \cgalParamNBegin{number_of_iterations}
- *     \cgalParamDescription{the number of diffuse-and-project rounds}
+ *     \cgalParamDescription{the largest number of smoothing rounds (of at most 25 L-BFGS iterations each)}
  *     \cgalParamType{`int`}
- *     \cgalParamDefault{10}
+ *     \cgalParamDefault{100}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{Frame_fields::parameters::smoothing_tolerance}
+ *     \cgalParamDescription{the smoothing stops after the first round lowering the energy by less than this fraction}
+ *     \cgalParamType{`double`}
+ *     \cgalParamDefault{1e-4}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{visitor}
+ *     \cgalParamDescription{called after each smoothing round as `visitor(round, energy)`, rounds counted from 1}
+ *     \cgalParamType{a callable `void(int, double)`}
+ *     \cgalParamDefault{none}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{Frame_fields::parameters::edge_length}
  *     \cgalParamDescription{the length of the three axes of every frame}
@@ -199,10 +237,15 @@ generate_cross_field(const Indexed_tetrahedral_mesh<Point_3>& mesh, const NamedP
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
   typedef typename Kernel_traits<Point_3>::Kernel K;
-  const int rounds = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), 10);
+  const int rounds = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), 100);
+  const double tolerance = choose_parameter(get_parameter(np, internal_np::smoothing_tolerance), 1e-4);
+  const std::function<void(int, double)> visitor =
+      choose_parameter(get_parameter(np, CGAL::internal_np::visitor), std::function<void(int, double)>());
   const double edge_length = choose_parameter(get_parameter(np, internal_np::edge_length), 1.);
   const bool verbose = choose_parameter(get_parameter(np, CGAL::internal_np::verbose), false);
   if(rounds < 0) throw std::invalid_argument("generate_cross_field_3: number_of_iterations must be >= 0");
+  if(!(tolerance >= 0) || !std::isfinite(tolerance))
+    throw std::invalid_argument("generate_cross_field_3: smoothing_tolerance must be non-negative and finite");
   if(!(edge_length > 0) || !std::isfinite(edge_length))
     throw std::invalid_argument("generate_cross_field_3: edge_length must be positive and finite");
   mesh.check("generate_cross_field_3");
@@ -216,7 +259,7 @@ generate_cross_field(const Indexed_tetrahedral_mesh<Point_3>& mesh, const NamedP
               << solver.number_of_corner_vertices() << " corners), " << mesh.cells.size()
               << " cells, " << mesh.boundary_facets.size() << " boundary facets, "
               << mesh.feature_edges.size() << " sharp edges\n";
-  Cross_field_solution s = solver.solve(rounds, verbose);
+  Cross_field_solution s = solver.solve(rounds, tolerance, verbose, visitor);
 
   Generated_cross_field_3<K> out;
   std::vector<Eigen::Matrix3d> frames(s.vertex_frames.size());
@@ -224,17 +267,26 @@ generate_cross_field(const Indexed_tetrahedral_mesh<Point_3>& mesh, const NamedP
   out.field = Discrete_frame_field_3<K>(mesh.points, mesh.cells, std::move(frames), Frame_location::VERTICES);
   out.boundary_facets = mesh.boundary_facets;
   out.feature_edges = mesh.feature_edges;
+  out.constrained_axes = solver.constrained_axes();
   out.singular_edges = std::move(s.singularities.singular_edges);
   out.number_of_interior_edges = s.singularities.number_of_interior_edges;
+  std::vector<char> on_boundary(mesh.points.size(), 0);
+  for(const auto& f : mesh.boundary_facets)
+    for(std::size_t v : f) on_boundary[v] = 1;
+  Singular_curves_report curves = singular_curves(out.singular_edges, on_boundary, mesh.xyz);
+  out.singular_curves = std::move(curves.curves);
+  out.number_of_dead_ends = curves.number_of_dead_ends;
   out.number_of_edges = s.edges.size();
   out.smoothness_energy = s.smoothness_energy;
+  out.round_energies = std::move(s.round_energies);
   out.number_of_corner_vertices = solver.number_of_corner_vertices();
   out.solver_iterations = s.solver_iterations;
   out.solver_error = s.solver_error;
   out.direct_solver = s.direct_solver;
   if(verbose)
     std::cerr << "generate_cross_field_3: " << out.singular_edges.size() << " singular edges of "
-              << out.number_of_interior_edges << " interior edges, smoothness energy "
+              << out.number_of_interior_edges << " interior edges in " << out.singular_curves.size()
+              << " curves (" << out.number_of_dead_ends << " dead ends), smoothness energy "
               << out.smoothness_energy << "\n";
   return out;
 }

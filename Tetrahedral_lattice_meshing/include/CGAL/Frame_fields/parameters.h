@@ -22,6 +22,7 @@ namespace internal_np {
 
 enum edge_length_t { edge_length };
 enum features_angle_t { features_angle };
+enum smoothing_tolerance_t { smoothing_tolerance };
 
 } // namespace internal_np
 
@@ -32,6 +33,9 @@ CGAL_VVM_ADD_NAMED_PARAMETER(edge_length)
 /// `double`, degrees: on a `Triangulation_3`, the convex hull's edges whose two facet
 /// normals differ by more than this are sharp features (default 60; 0 for none)
 CGAL_VVM_ADD_NAMED_PARAMETER(features_angle)
+/// `double`: the smoothing of a generated cross field stops after the first round that
+/// lowers its energy by less than this fraction (default 1e-4)
+CGAL_VVM_ADD_NAMED_PARAMETER(smoothing_tolerance)
 
 } // namespace parameters
 } // namespace Frame_fields

@@ -8,6 +8,7 @@
 #define CGAL_FRAME_FIELDS_IO_WRITE_VTU_H
 
 #include <CGAL/Frame_fields/Discrete_frame_field_3.h>
+#include <CGAL/Frame_fields/Singular_curve.h>
 
 #include <CGAL/number_utils.h>
 
@@ -104,6 +105,38 @@ void write_edges_VTU(std::ostream& os, const std::vector<Point_3>& points, const
   internal::write_VTU_cell_types(os, edges.size(), 2, 3); // VTK_LINE
   os << "</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
   if(!os) throw std::runtime_error("write_edges_VTU: the stream failed");
+}
+
+/*!
+ * \ingroup PkgTetrahedralLatticeMeshingFrameFieldsIO
+ * writes `curves` (e.g. `Generated_cross_field_3::singular_curves`, indices into `points`)
+ * to `os` as an ASCII VTK XML unstructured grid of polylines, with the cell data `length`
+ * and `closed` (1 for a loop). Numbers are written with 17 significant digits; the
+ * precision of `os` is restored afterwards.
+ * \throws std::runtime_error if the stream fails
+ */
+template <class Point_3>
+void write_polylines_VTU(std::ostream& os, const std::vector<Point_3>& points,
+                         const std::vector<Singular_curve>& curves)
+{
+  boost::io::ios_precision_saver saved_precision(os);
+  os.precision(17);
+  internal::write_VTU_head(os, points, curves.size());
+  for(const Singular_curve& c : curves) {
+    for(std::size_t v : c.vertices) os << v << " ";
+    os << "\n";
+  }
+  os << "</DataArray>\n<DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n";
+  std::size_t offset = 0;
+  for(const Singular_curve& c : curves) os << (offset += c.vertices.size()) << "\n";
+  os << "</DataArray>\n<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n";
+  for(std::size_t i = 0; i < curves.size(); ++i) os << "4\n"; // VTK_POLY_LINE
+  os << "</DataArray>\n</Cells>\n<CellData>\n<DataArray type=\"Float64\" Name=\"length\" format=\"ascii\">\n";
+  for(const Singular_curve& c : curves) os << c.length << "\n";
+  os << "</DataArray>\n<DataArray type=\"UInt8\" Name=\"closed\" format=\"ascii\">\n";
+  for(const Singular_curve& c : curves) os << (c.is_closed() ? 1 : 0) << "\n";
+  os << "</DataArray>\n</CellData>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
+  if(!os) throw std::runtime_error("write_polylines_VTU: the stream failed");
 }
 
 } // namespace IO

@@ -12,12 +12,13 @@
 // 2. least squares of sum over mesh edges |c_i - c_j|^2 (sparse, Eigen CG, with
 //    a sparse LDLT factorization if CG does not converge);
 // 3. every vertex projected to its nearest valid (constrained) frame;
-// 4. rounds of diffusion (each vertex to the sum of itself and its neighbours)
-//    and projection, which make the field smoother at the projected frames.
+// 4. L-BFGS on the frames themselves (Cross_field_smoother.h), the constrained
+//    ones turning about their axis only, until the energy stops decreasing.
 
 #ifndef CGAL_FRAME_FIELDS_INTERNAL_CROSS_FIELD_SOLVER_H
 #define CGAL_FRAME_FIELDS_INTERNAL_CROSS_FIELD_SOLVER_H
 
+#include <CGAL/Frame_fields/internal/Cross_field_smoother.h>
 #include <CGAL/Frame_fields/internal/L4_spherical_harmonics.h>
 #include <CGAL/Frame_fields/internal/Singular_edges.h>
 
@@ -28,15 +29,11 @@
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
 
-#ifdef CGAL_LINKED_WITH_TBB
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-#endif
-
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <functional>
 #include <iostream>
 #include <memory>
 #include <sstream>
@@ -47,20 +44,6 @@ namespace CGAL {
 namespace Frame_fields {
 namespace internal {
 
-// f(i) for i in [0, n), in parallel when TBB is there (each i independent)
-template <class F>
-void for_each_index(std::size_t n, const F& f)
-{
-#ifdef CGAL_LINKED_WITH_TBB
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 256),
-                    [&](const tbb::blocked_range<std::size_t>& r) {
-                      for(std::size_t i = r.begin(); i != r.end(); ++i) f(i);
-                    });
-#else
-  for(std::size_t i = 0; i < n; ++i) f(i);
-#endif
-}
-
 struct Cross_field_solution
 {
   std::vector<Eigen::Matrix3d> vertex_frames; // rotations
@@ -68,6 +51,7 @@ struct Cross_field_solution
   std::vector<std::array<std::size_t, 2>> edges;
   Singular_edge_report singularities;
   double smoothness_energy = 0; // sum over edges of |c_i - c_j|^2
+  std::vector<double> round_energies; // after the projection, then after each smoothing round
   int solver_iterations = 0;    // CG iterations of the least-squares solve
   double solver_error = 0;      // its relative residual |Mx - b| / |b|
   bool direct_solver = false;   // CG did not converge: the sparse LDLT factorization solved it
@@ -109,9 +93,14 @@ public:
 
   /// the most CG iterations before the direct solver takes over (default 5000)
   void set_max_iterations(int k) { max_iterations_ = k; }
+  /// the most L-BFGS iterations of a smoothing round (default 25)
+  void set_iterations_per_round(int k) { iterations_per_round_ = k; }
 
+  /// At most `max_rounds` smoothing rounds, stopped when one lowers the energy by
+  /// less than `tolerance` times it; `after_round(round, energy)` after each.
   /// \throws std::runtime_error if neither CG nor the LDLT factorization solves the system
-  Cross_field_solution solve(int diffusion_rounds, bool verbose) const
+  Cross_field_solution solve(int max_rounds, double tolerance, bool verbose,
+                             const std::function<void(int, double)>& after_round = {}) const
   {
     const L4_frames& frames = L4_frames::instance();
     const std::size_t n = xyz_.size();
@@ -121,19 +110,13 @@ public:
     s.coefficients.resize(n);
     for_each_index(n, [&](std::size_t v) { s.vertex_frames[v] = nearest_frame(v, c[v]); });
     for_each_index(n, [&](std::size_t v) { s.coefficients[v] = frames.frame(s.vertex_frames[v]); });
-    for(int round = 0; round < diffusion_rounds; ++round) {
-      for_each_index(n, [&](std::size_t v) {
-        SH_vector q = s.coefficients[v];
-        for(std::size_t w : neighbours_[v]) q += s.coefficients[w];
-        c[v] = q;
-      });
-      for_each_index(n, [&](std::size_t v) {
-        s.vertex_frames[v] = nearest_frame(v, c[v]);
-      });
-      for_each_index(n, [&](std::size_t v) { s.coefficients[v] = frames.frame(s.vertex_frames[v]); });
-      if(verbose) std::cerr << "  diffuse and project round " << round + 1 << ": energy " << energy(s.coefficients) << "\n";
-    }
-    s.smoothness_energy = energy(s.coefficients);
+    const Cross_field_smoother smoother(neighbours_, axis_);
+    s.round_energies = smoother.smooth(s.vertex_frames, s.coefficients, max_rounds, tolerance, iterations_per_round_,
+                                       [&](int round, double e) {
+                                         if(verbose) std::cerr << "  smoothing round " << round << ": energy " << e << "\n";
+                                         if(after_round) after_round(round, e);
+                                       });
+    s.smoothness_energy = s.round_energies.back();
     s.edges = edges_;
     // one frame per cell, interpolated at its centroid, for the matchings
     std::vector<Eigen::Matrix3d> cell_frames(cells_.size());
@@ -311,13 +294,6 @@ private:
     return c;
   }
 
-  double energy(const std::vector<SH_vector>& c) const
-  {
-    double e = 0;
-    for(const auto& edge : edges_) e += (c[edge[0]] - c[edge[1]]).squaredNorm();
-    return e;
-  }
-
   const std::vector<Eigen::Vector3d>& xyz_;
   const std::vector<std::array<std::size_t, 4>>& cells_;
   const std::vector<std::array<std::size_t, 3>>& boundary_facets_;
@@ -327,6 +303,7 @@ private:
   std::vector<std::shared_ptr<const Axis_constrained_frames>> constrained_;
   std::size_t n_constrained_ = 0, n_corners_ = 0;
   int max_iterations_ = 5000;
+  int iterations_per_round_ = 25;
 };
 
 } // namespace internal
