@@ -31,7 +31,8 @@ struct Singular_curve
   std::vector<std::size_t> vertices;
   /// the sum of its edges' lengths
   double length = 0;
-  /// `true` if the curve is a loop
+  /// `true` if the curve ends where it starts: a loop, on its own or through a vertex
+  /// where other singular edges meet
   bool is_closed() const { return vertices.size() > 2 && vertices.front() == vertices.back(); }
 };
 

@@ -48,7 +48,8 @@ struct Boundary_alignment_statistics
   /// the vertices of the boundary facets, in increasing order
   std::vector<std::size_t> boundary_vertices;
   /// per boundary vertex, the angle between its constrained axis
-  /// (`Generated_cross_field_3::constrained_axes`) and the nearest axis of its frame
+  /// (`Generated_cross_field_3::constrained_axes`) and the nearest axis of its frame;
+  /// 90 for a boundary vertex left without a constrained axis (all its facets degenerate)
   std::vector<double> vertex_errors;
   double vertex_mean = 0; ///< mean of `vertex_errors`
   double vertex_p95 = 0;  ///< their 95th percentile

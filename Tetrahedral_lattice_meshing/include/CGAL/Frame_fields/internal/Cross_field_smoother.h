@@ -190,11 +190,6 @@ private:
     return so3_exp(x.segment<3>(offset_[v])) * start;
   }
 
-  SH_vector frame_of(std::size_t v, const Eigen::Matrix3d& start, const Eigen::VectorXd& x) const
-  {
-    return L4_frames::instance().frame(rotation_of(v, start, x));
-  }
-
   const std::vector<std::vector<std::size_t>>& neighbours_;
   const std::vector<Eigen::Vector3d>& axes_;
   std::vector<Eigen::Index> offset_;
