@@ -4,7 +4,7 @@
 // compare_hex_dominant INPUT [--particles N] [--features-angle DEG]
 //                      [--field cross|identity|fig4.15a..f|cylinder|cylinder-scaled]
 //                      [--q-bound X | --q-bound-sweep] [--threads N] [--json FILE] [--out-dir DIR]
-//                      [--seed N] [--verbose]
+//                      [--seed N] [--levels K] [--verbose]
 //
 // make_hex_dominant_mesh_3 (dissertation 4.4, Tables 4.6-4.7): cell counts, hex volume,
 // scaled Jacobians, alignment, boundary distance to the input against make_mesh_3's at
@@ -74,7 +74,7 @@ const char* usage =
     "usage: compare_hex_dominant INPUT [--particles N] [--features-angle DEG]\n"
     "                            [--field cross|identity|fig4.15a..f|cylinder|cylinder-scaled]\n"
     "                            [--q-bound X | --q-bound-sweep] [--threads N] [--json FILE] [--out-dir DIR]\n"
-    "                            [--boundary-distance D] [--seed N] [--verbose]\n"
+    "                            [--boundary-distance D] [--seed N] [--levels K] [--verbose]\n"
     "  INPUT  a closed triangle surface (OFF, OBJ, PLY, STL, ...), or cube, warped-cube or cylinder:\n"
     "         cube is [-1,1]^3 ([0.1,1.1]^3 with fig4.15c and fig4.15d); warped-cube is T [-1,1]^3\n"
     "         for a constant field T (fig4.15b, e, f; scaled to volume 8), the warped cube of\n"
@@ -96,6 +96,7 @@ const char* usage =
     "  --boundary-distance D  the boundary refinement of section 4.4.2 down to distance D (default 0:\n"
     "                      none)\n"
     "  --seed N            seed of the particles and of make_mesh_3 (default 0)\n"
+    "  --levels K          multiresolution levels of the particles (default: the package's choice)\n"
     "  --verbose           progress of the particle rounds\n";
 
 // T of the constant fields
@@ -114,7 +115,7 @@ struct Options
   std::size_t particles = 30000;
   double features_angle = -1, q_bound = 0.5, boundary_distance = 0;
   bool sweep = false, verbose = false;
-  int threads = 0;
+  int threads = 0, levels = -1;
   unsigned seed = 0;
 };
 
@@ -149,6 +150,7 @@ Options parse_command_line(int argc, char** argv)
       if(!(o.boundary_distance >= 0)) throw Input_error("--boundary-distance must be non-negative");
     }
     else if(arg == "--seed") o.seed = parse_number<unsigned>(arg, value());
+    else if(arg == "--levels") o.levels = parse_number<int>(arg, value());
     else if(arg == "--verbose") o.verbose = true;
     else if(arg == "--help" || arg == "-h") {
       std::cout << usage;
@@ -325,13 +327,14 @@ int run(const Options& o)
   for(double q : bounds) {
     namespace TP = TLM::parameters;
     Mesh mesh;
-    if(q == bounds.front())
-      mesh = CGAL::make_hex_dominant_mesh_3<C3T3>(
-          domain, field,
-          TP::number_of_particles(o.particles, TP::number_of_threads(o.threads,
-              HDM::parameters::quality_bound(q, HDM::parameters::boundary_distance(o.boundary_distance,
-                  HDM::parameters::hex_dominant_report(&report,
-                  HDM::parameters::tetrahedral_mesh(&tets, CGAL::parameters::random_seed(o.seed).verbose(o.verbose))))))));
+    if(q == bounds.front()) {
+      auto np = TP::number_of_particles(o.particles, TP::number_of_threads(o.threads,
+          HDM::parameters::quality_bound(q, HDM::parameters::boundary_distance(o.boundary_distance,
+              HDM::parameters::hex_dominant_report(&report,
+                  HDM::parameters::tetrahedral_mesh(&tets, CGAL::parameters::random_seed(o.seed).verbose(o.verbose)))))));
+      mesh = o.levels < 0 ? CGAL::make_hex_dominant_mesh_3<C3T3>(domain, field, np)
+                          : CGAL::make_hex_dominant_mesh_3<C3T3>(domain, field, TP::multiresolution_levels(o.levels, np));
+    }
     else { // the same tets merged again
       CGAL::Real_timer merge;
       merge.start();

@@ -3,7 +3,7 @@
 //
 // compare_tet_meshers INPUT [--vertices N] [--features-angle DEG]
 //                     [--field identity|cross|rotation-y|fig4.8|fig4.9] [--methods m1,m2,...]
-//                     [--threads N] [--json FILE] [--out-dir DIR] [--seed N] [--verbose]
+//                     [--threads N] [--json FILE] [--out-dir DIR] [--seed N] [--levels K] [--verbose]
 //
 // Lattice meshes (make_lattice_mesh_3, BCC / FCC, with or without GSM) against
 // make_mesh_3 followed by CGAL's optimizers or GSM, all at one vertex count,
@@ -33,7 +33,7 @@ namespace {
 const char* usage =
     "usage: compare_tet_meshers INPUT [--vertices N] [--features-angle DEG]\n"
     "                           [--field identity|cross|rotation-y|fig4.8|fig4.9] [--methods m1,m2,...]\n"
-    "                           [--threads N] [--json FILE] [--out-dir DIR] [--seed N] [--verbose]\n"
+    "                           [--threads N] [--json FILE] [--out-dir DIR] [--seed N] [--levels K] [--verbose]\n"
     "  INPUT  a closed triangle surface (OFF, OBJ, PLY, STL, ...), or cube, sphere, torus\n"
     "         (cube is [-1,1]^3, [0.1,1.1]^3 with fig4.8, [1,11]^3 with fig4.9; torus: radii 1 and 0.4 about y)\n"
     "  --vertices N        the vertex count of every method (default 10000): the lattice methods ask\n"
@@ -52,6 +52,7 @@ const char* usage =
     "  --json FILE         one JSON line per method\n"
     "  --out-dir DIR       write <model>_<method>.mesh and .vtu (with a per-cell alignment_error)\n"
     "  --seed N            seed of the particles and of make_mesh_3 (default 0)\n"
+    "  --levels K          multiresolution levels of the particles (default: the package's choice)\n"
     "  --verbose           progress of the particle rounds\n";
 
 using vvm_benchmark::parse_number;
@@ -87,6 +88,8 @@ Options parse_command_line(int argc, char** argv)
       o.out_dir = value();
     } else if(arg == "--seed") {
       o.seed = parse_number<unsigned int>(arg, value());
+    } else if(arg == "--levels") {
+      o.levels = parse_number<int>(arg, value());
     } else if(arg == "--verbose") {
       o.verbose = true;
     } else if(arg == "--help" || arg == "-h") {

@@ -28,6 +28,7 @@ struct Options
   std::string json_file;
   std::string out_dir;
   unsigned int seed = 0;
+  int levels = -1;                  // multiresolution levels; < 0: the package's choice
   bool verbose = false;
 };
 

@@ -213,11 +213,12 @@ private:
       for(int attempt = 0; attempt < 2; ++attempt) {
         run.requested = std::size_t(std::llround(wanted));
         namespace TP = TLM::parameters;
-        run.c3t3 = CGAL::make_lattice_mesh_3<C3T3>(
-            domain_, field_,
-            TP::lattice(type, TP::number_of_particles(run.requested, TP::number_of_threads(options_.threads,
-                TP::mesh_optimization(TLM::Lattice_mesh_optimization::NONE, TP::mesh_report(&run.report,
-                    CGAL::parameters::random_seed(options_.seed).verbose(options_.verbose)))))));
+        auto np = TP::lattice(type, TP::number_of_particles(run.requested, TP::number_of_threads(options_.threads,
+            TP::mesh_optimization(TLM::Lattice_mesh_optimization::NONE, TP::mesh_report(&run.report,
+                CGAL::parameters::random_seed(options_.seed).verbose(options_.verbose))))));
+        run.c3t3 = options_.levels < 0
+                       ? CGAL::make_lattice_mesh_3<C3T3>(domain_, field_, np)
+                       : CGAL::make_lattice_mesh_3<C3T3>(domain_, field_, TP::multiresolution_levels(options_.levels, np));
         run.time_s = run.report.particle_time + run.report.connection_time;
         const double n = double(GSM::number_of_vertices_in_complex(run.c3t3));
         if(std::abs(n - double(options_.target_vertices)) <= 0.04 * double(options_.target_vertices)) break;

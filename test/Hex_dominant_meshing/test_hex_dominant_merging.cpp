@@ -506,6 +506,31 @@ void test_make_hex_dominant_mesh_on_cube()
   CHECK(throws([&] { CGAL::make_hex_dominant_mesh_3<Cube_c3t3>(domain, Constant_field(), HDM::parameters::quality_bound(2.)); }));
 }
 
+// make_hex_dominant_mesh_3 on the cube at 5,832 = 18^3 particles, with the default levels: the
+// cube wants an odd number of layers (17), which a lattice refined once from 2 l* cannot have;
+// it must still come out all-hex (a dislocation leaves prisms and tets along a line)
+void test_all_hex_cube_at_odd_layer_count()
+{
+  Surface_mesh surface;
+  CHECK(CGAL::IO::read_polygon_mesh(std::string(VVM_DATA_DIR) + "/cube.off", surface));
+  Cube_domain domain(surface);
+  domain.detect_features(60);
+  HDM::Hex_dominant_report report;
+  const Mesh mesh = CGAL::make_hex_dominant_mesh_3<Cube_c3t3>(
+      domain, Constant_field(),
+      TLM::parameters::number_of_particles(std::size_t(5832), HDM::parameters::hex_dominant_report(&report,
+          TLM::parameters::number_of_threads(2))));
+  const HDM::Hex_dominant_statistics s = HDM::hex_dominant_statistics(mesh, {}, &report.merge);
+  std::cout << "make_hex_dominant_mesh_3, cube, 5832 particles asked: " << report.number_of_particles << " particles, "
+            << s.number_of_hexahedra << " hex, " << s.number_of_prisms << " prisms, " << s.number_of_pyramids
+            << " pyramids, " << s.number_of_tetrahedra << " tets; H_vol " << s.hexahedron_volume_percent << "%, SJ min "
+            << s.scaled_jacobian_min << "\n";
+  CHECK(s.number_of_prisms + s.number_of_pyramids + s.number_of_tetrahedra == 0);
+  CHECK(s.hexahedron_volume_percent > 99.999);
+  CHECK(s.scaled_jacobian_min > 0.9);
+  CHECK(s.number_of_inverted_cells == 0 && s.number_of_nonconforming_faces == 0);
+}
+
 // the Euclidean Delaunay tets of a perturbed grid of 4 x 1 x 1 boxes cross the boxes; the
 // flips towards the Delaunay tets in the space of T = diag(4, 1, 1) let more of them merge,
 // keep a valid partition, and end at a fixed point
@@ -717,6 +742,7 @@ int main()
   test_random_tets();
   test_nonconforming_detected();
   test_make_hex_dominant_mesh_on_cube();
+  test_all_hex_cube_at_odd_layer_count();
   test_metric_flips();
   test_make_hex_dominant_mesh_on_warped_cube();
   test_make_hex_dominant_mesh_on_graded_cube();

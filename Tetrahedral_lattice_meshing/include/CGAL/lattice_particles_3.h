@@ -175,9 +175,15 @@ Particles_in_domain<MeshDomain> lattice_particles(const MeshDomain& domain, cons
          std::to_string(maximum_number_of_particles) + ")");
   if(measures.volume * r.lattice.particles_per_cube / (l * l * l) < 1)
     fail("the edge length " + std::to_string(l) + " is larger than the domain (under one lattice cell in it)");
-  // one level unless the coarse lattice is too small; the cubic lattice settles without
-  // dislocations from a coarse one (all-hex cubes) much earlier
-  if(r.options.levels < 0) r.options.levels = n >= (r.lattice.type == Lattice_type::CUBIC ? 400 : 4000) ? 1 : 0;
+  // one level unless the coarse lattice is too small. The cubic lattice settles without
+  // dislocations from a coarse one much earlier, and two levels leave it fewer: a lattice
+  // refined from 2 l* has an even number of layers across a box, and where the box wants an
+  // odd one the fine level makes a dislocation; from 4 l* the coarse lattice is strained
+  // instead (the cube at 3,000-15,000 particles: all-hex at 7 of 8 counts, against 3)
+  if(r.options.levels < 0) {
+    if(r.lattice.type == Lattice_type::CUBIC) r.options.levels = n >= 3200 ? 2 : n >= 400 ? 1 : 0;
+    else r.options.levels = n >= 4000 ? 1 : 0;
+  }
 
   Lattice_optimizer<FrameField, Domain_boundary<MeshDomain, K>, Point_3> optimizer(r.lattice, field, *out.boundary, l,
                                                                                    r.options);
@@ -246,7 +252,7 @@ default_frame_field(const MeshDomain& domain,
  *   \cgalParamNEnd
  *   \cgalParamNBegin{Tetrahedral_lattice_meshing::parameters::multiresolution_levels}
  *     \cgalParamDescription{\f$ k \f$: optimize at \f$ 2^k l^* \f$ first, then refine level by level}
- *     \cgalParamType{`int` in [0, 6]} \cgalParamDefault{1 from 4,000 particles (cubic lattice: 400), else 0}
+ *     \cgalParamType{`int` in [0, 6]} \cgalParamDefault{1 from 4,000 particles, else 0 (cubic lattice: 2 from 3,200 particles, 1 from 400)}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{number_of_iterations}
  *     \cgalParamDescription{MaxRoundNum: the largest number of deletion-insertion rounds per level}
