@@ -13,13 +13,13 @@
 #define CGAL_FRAME_FIELDS_BOUNDARY_ALIGNMENT_H
 
 #include <CGAL/Frame_fields/generate_cross_field_3.h>
+#include <CGAL/Frame_fields/internal/Boundary_vertex_normals.h>
 #include <CGAL/Frame_fields/internal/L4_spherical_harmonics.h>
 #include <CGAL/GSM_mesh_optimization/tetrahedron_quality.h> // internal::to_eigen
 
 #include <CGAL/number_type_config.h> // CGAL_PI
 
 #include <Eigen/Core>
-#include <Eigen/Eigenvalues>
 
 #include <algorithm>
 #include <cmath>
@@ -127,15 +127,7 @@ Boundary_alignment_statistics boundary_alignment_statistics(const Generated_cros
   std::tie(s.p95, s.max) = internal::p95_and_max(s.facet_errors);
 
   // the vertex view: the constraint alone
-  std::vector<Eigen::Matrix3d> normal_tensor(frames.size(), Eigen::Matrix3d::Zero());
-  for(std::size_t i = 0; i < n; ++i) {
-    const auto& f = g.boundary_facets[i];
-    const Eigen::Vector3d N = (xyz(f[1]) - xyz(f[0])).cross(xyz(f[2]) - xyz(f[0]));
-    for(std::size_t v : f) {
-      s.boundary_vertices.push_back(v);
-      if(N.norm() > 0) normal_tensor[v] += N * N.transpose() / (2 * N.norm());
-    }
-  }
+  for(const auto& f : g.boundary_facets) s.boundary_vertices.insert(s.boundary_vertices.end(), f.begin(), f.end());
   std::sort(s.boundary_vertices.begin(), s.boundary_vertices.end());
   s.boundary_vertices.erase(std::unique(s.boundary_vertices.begin(), s.boundary_vertices.end()),
                             s.boundary_vertices.end());
@@ -148,12 +140,11 @@ Boundary_alignment_statistics boundary_alignment_statistics(const Generated_cros
   std::tie(s.vertex_p95, s.vertex_max) = internal::p95_and_max(s.vertex_errors);
 
   // the geometry: facet normals against their vertices' normals
+  const std::vector<Eigen::Matrix3d> normal_tensor = internal::boundary_normal_tensors(frames.size(), g.boundary_facets, xyz);
   std::vector<Eigen::Vector3d> vertex_normal(frames.size(), Eigen::Vector3d::Zero());
   std::vector<char> on_sharp_edge(frames.size(), 0);
   for(const auto& e : g.feature_edges) on_sharp_edge[e[0]] = on_sharp_edge[e[1]] = 1;
-  for(std::size_t v : s.boundary_vertices)
-    if(normal_tensor[v].trace() > 0)
-      vertex_normal[v] = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(normal_tensor[v]).eigenvectors().col(2);
+  for(std::size_t v : s.boundary_vertices) vertex_normal[v] = internal::principal_normal(normal_tensor[v]);
   s.facet_normal_deviations.resize(n);
   for(std::size_t i = 0; i < n; ++i) {
     const auto& f = g.boundary_facets[i];

@@ -18,6 +18,7 @@
 #ifndef CGAL_FRAME_FIELDS_INTERNAL_CROSS_FIELD_SOLVER_H
 #define CGAL_FRAME_FIELDS_INTERNAL_CROSS_FIELD_SOLVER_H
 
+#include <CGAL/Frame_fields/internal/Boundary_vertex_normals.h>
 #include <CGAL/Frame_fields/internal/Cross_field_smoother.h>
 #include <CGAL/Frame_fields/internal/L4_spherical_harmonics.h>
 #include <CGAL/Frame_fields/internal/Singular_edges.h>
@@ -137,19 +138,15 @@ private:
   void classify_vertices(const std::vector<std::array<std::size_t, 2>>& feature_edges)
   {
     const std::size_t n = xyz_.size();
-    std::vector<Eigen::Matrix3d> normal_tensor(n, Eigen::Matrix3d::Zero());
+    const std::vector<Eigen::Matrix3d> normal_tensor =
+        boundary_normal_tensors(n, boundary_facets_, [this](std::size_t v) { return xyz_[v]; });
     std::vector<char> on_boundary(n, 0);
     std::vector<std::vector<std::size_t>> facets_of(n);
-    for(std::size_t i = 0; i < boundary_facets_.size(); ++i) {
-      const auto& f = boundary_facets_[i];
-      const Eigen::Vector3d N = (xyz_[f[1]] - xyz_[f[0]]).cross(xyz_[f[2]] - xyz_[f[0]]);
-      const double len = N.norm();
-      for(std::size_t v : f) {
+    for(std::size_t i = 0; i < boundary_facets_.size(); ++i)
+      for(std::size_t v : boundary_facets_[i]) {
         on_boundary[v] = 1;
         facets_of[v].push_back(i);
-        if(len > 0) normal_tensor[v] += N * N.transpose() / (2 * len); // area n n^T
       }
-    }
     std::vector<std::vector<std::size_t>> sharp(n);
     for(const auto& e : feature_edges) {
       sharp[e[0]].push_back(e[1]);
@@ -162,9 +159,8 @@ private:
         const Eigen::Vector3d d0 = (xyz_[v] - xyz_[sharp[v][0]]).normalized();
         const Eigen::Vector3d d1 = (xyz_[sharp[v][1]] - xyz_[v]).normalized();
         if(d0.dot(d1) > std::cos(CGAL_PI / 4)) axis_[v] = (d0 + d1).normalized();
-      } else if(sharp[v].empty() && on_boundary[v] && normal_tensor[v].trace() > 0) {
-        Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(normal_tensor[v]);
-        axis_[v] = eig.eigenvectors().col(2);
+      } else if(sharp[v].empty() && on_boundary[v]) {
+        axis_[v] = principal_normal(normal_tensor[v]);
       }
       if(!sharp[v].empty() && axis_[v].squaredNorm() == 0) { // a corner
         axis_[v] = dominant_facet_normal(facets_of[v]);
