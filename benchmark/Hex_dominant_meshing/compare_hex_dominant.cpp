@@ -4,7 +4,7 @@
 // compare_hex_dominant INPUT [--particles N] [--features-angle DEG]
 //                      [--field cross|identity|fig4.15a..f|cylinder|cylinder-scaled]
 //                      [--q-bound X | --q-bound-sweep] [--threads N] [--json FILE] [--out-dir DIR]
-//                      [--seed N] [--levels K] [--verbose]
+//                      [--boundary-distance D] [--seed N] [--levels K] [--verbose]
 //
 // make_hex_dominant_mesh_3 (dissertation 4.4, Tables 4.6-4.7): cell counts, hex volume,
 // scaled Jacobians, alignment, boundary distance to the input against make_mesh_3's at
@@ -96,7 +96,7 @@ const char* usage =
     "  --boundary-distance D  the boundary refinement of section 4.4.2 down to distance D (default 0:\n"
     "                      none)\n"
     "  --seed N            seed of the particles and of make_mesh_3 (default 0)\n"
-    "  --levels K          multiresolution levels of the particles (default: the package's choice)\n"
+    "  --levels K          multiresolution levels of the particles, K in [0, 6] (default: the package's choice)\n"
     "  --verbose           progress of the particle rounds\n";
 
 // T of the constant fields
@@ -150,7 +150,10 @@ Options parse_command_line(int argc, char** argv)
       if(!(o.boundary_distance >= 0)) throw Input_error("--boundary-distance must be non-negative");
     }
     else if(arg == "--seed") o.seed = parse_number<unsigned>(arg, value());
-    else if(arg == "--levels") o.levels = parse_number<int>(arg, value());
+    else if(arg == "--levels") {
+      o.levels = parse_number<int>(arg, value());
+      if(o.levels < 0 || o.levels > 6) throw Input_error("--levels must be in [0, 6]");
+    }
     else if(arg == "--verbose") o.verbose = true;
     else if(arg == "--help" || arg == "-h") {
       std::cout << usage;

@@ -52,7 +52,7 @@ const char* usage =
     "  --json FILE         one JSON line per method\n"
     "  --out-dir DIR       write <model>_<method>.mesh and .vtu (with a per-cell alignment_error)\n"
     "  --seed N            seed of the particles and of make_mesh_3 (default 0)\n"
-    "  --levels K          multiresolution levels of the particles (default: the package's choice)\n"
+    "  --levels K          multiresolution levels of the particles, K in [0, 6] (default: the package's choice)\n"
     "  --verbose           progress of the particle rounds\n";
 
 using vvm_benchmark::parse_number;
@@ -90,6 +90,7 @@ Options parse_command_line(int argc, char** argv)
       o.seed = parse_number<unsigned int>(arg, value());
     } else if(arg == "--levels") {
       o.levels = parse_number<int>(arg, value());
+      if(o.levels < 0 || o.levels > 6) throw Input_error("--levels must be in [0, 6]");
     } else if(arg == "--verbose") {
       o.verbose = true;
     } else if(arg == "--help" || arg == "-h") {

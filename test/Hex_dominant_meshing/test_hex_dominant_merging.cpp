@@ -507,8 +507,8 @@ void test_make_hex_dominant_mesh_on_cube()
 }
 
 // make_hex_dominant_mesh_3 on the cube at 5,832 = 18^3 particles, with the default levels: the
-// cube wants an odd number of layers (17), which a lattice refined once from 2 l* cannot have;
-// it must still come out all-hex (a dislocation leaves prisms and tets along a line)
+// cube wants 17 cells across, which a lattice refined once from 2 l* cannot have (it left a
+// dislocation line of prisms and tets); the lattice must come out whole, all-hex, filling the cube
 void test_all_hex_cube_at_odd_layer_count()
 {
   Surface_mesh surface;
@@ -525,8 +525,9 @@ void test_all_hex_cube_at_odd_layer_count()
             << s.number_of_hexahedra << " hex, " << s.number_of_prisms << " prisms, " << s.number_of_pyramids
             << " pyramids, " << s.number_of_tetrahedra << " tets; H_vol " << s.hexahedron_volume_percent << "%, SJ min "
             << s.scaled_jacobian_min << "\n";
-  CHECK(s.number_of_prisms + s.number_of_pyramids + s.number_of_tetrahedra == 0);
+  CHECK(s.number_of_hexahedra > 0 && s.number_of_prisms + s.number_of_pyramids + s.number_of_tetrahedra == 0);
   CHECK(s.hexahedron_volume_percent > 99.999);
+  CHECK(std::abs(s.total_volume - 8.) < 0.08);
   CHECK(s.scaled_jacobian_min > 0.9);
   CHECK(s.number_of_inverted_cells == 0 && s.number_of_nonconforming_faces == 0);
 }

@@ -175,11 +175,12 @@ Particles_in_domain<MeshDomain> lattice_particles(const MeshDomain& domain, cons
          std::to_string(maximum_number_of_particles) + ")");
   if(measures.volume * r.lattice.particles_per_cube / (l * l * l) < 1)
     fail("the edge length " + std::to_string(l) + " is larger than the domain (under one lattice cell in it)");
-  // one level unless the coarse lattice is too small. The cubic lattice settles without
-  // dislocations from a coarse one much earlier, and two levels leave it fewer: a lattice
-  // refined from 2 l* has an even number of layers across a box, and where the box wants an
-  // odd one the fine level makes a dislocation; from 4 l* the coarse lattice is strained
-  // instead (the cube at 3,000-15,000 particles: all-hex at 7 of 8 counts, against 3)
+  // one level unless the coarse lattice is too small (n: the lattice's estimated count). The
+  // cubic lattice settles without dislocations from a coarse one much earlier, and two levels
+  // leave it fewer: refined once from 2 l*, a box that wants one layer more or less than twice
+  // the coarse lattice's often got a partial layer (a dislocation line); from 4 l* the lattice
+  // was strained instead (measured: the cube at 3,000-15,000 particles all-hex at 7 of 8
+  // counts, against 3)
   if(r.options.levels < 0) {
     if(r.lattice.type == Lattice_type::CUBIC) r.options.levels = n >= 3200 ? 2 : n >= 400 ? 1 : 0;
     else r.options.levels = n >= 4000 ? 1 : 0;

@@ -45,7 +45,7 @@ CGAL_VVM_ADD_NAMED_PARAMETER(number_of_particles)
 CGAL_VVM_ADD_NAMED_PARAMETER(kernel_width)
 /// `double`: the neighbour radius \f$ R \f$ in units of \f$ l^* \f$ (default 1.3; cubic 1.5)
 CGAL_VVM_ADD_NAMED_PARAMETER(neighbor_radius)
-/// `int`: \f$ k \f$, the particles are first optimized at \f$ 2^k l^* \f$ (default: 1 from 4,000 particles (cubic: 400), else 0)
+/// `int`: \f$ k \f$, the particles are first optimized at \f$ 2^k l^* \f$ (default: 1 from 4,000 particles, else 0; cubic: 2 from 3,200 particles, 1 from 400)
 CGAL_VVM_ADD_NAMED_PARAMETER(multiresolution_levels)
 /// `int`: the number of threads (default 0: TBB's choice); the result does not depend on it
 CGAL_VVM_ADD_NAMED_PARAMETER(number_of_threads)
