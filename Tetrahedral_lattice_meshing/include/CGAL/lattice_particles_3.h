@@ -179,7 +179,7 @@ Particles_in_domain<MeshDomain> lattice_particles(const MeshDomain& domain, cons
   // cubic lattice settles without dislocations from a coarse one much earlier, and two levels
   // leave it fewer: refined once from 2 l*, a box that wants one layer more or less than twice
   // the coarse lattice's often got a partial layer (a dislocation line); from 4 l* the lattice
-  // was strained instead (measured: the cube at 3,000-15,000 particles all-hex at 7 of 8
+  // was strained instead (measured: the cube at 4,000-15,000 particles all-hex at 6 of 7
   // counts, against 3)
   if(r.options.levels < 0) {
     if(r.lattice.type == Lattice_type::CUBIC) r.options.levels = n >= 3200 ? 2 : n >= 400 ? 1 : 0;
