@@ -671,6 +671,29 @@ void test_sphere_run()
   VVM_CHECK(worst < 1e-6);
   if(worst >= 1e-6) std::cerr << "    surface vertex off the sphere by " << worst << "\n";
 
+  // with no energy threshold, the rounds stop once the worst cells stop improving: two
+  // rounds in a row that neither raise the smallest angle by 0.01 deg nor lower the number
+  // of cells under 30 deg by a 200th (the energy alone creeps down for all 50 rounds)
+  {
+    Implicit_c3t3 stalled = make_sphere_mesh(0.2);
+    std::vector<GSM::Round_report> rounds;
+    const CGAL::Mesh_optimization_return_code stop = CGAL::gsm_optimize_mesh_3(
+        stalled, domain,
+        GSM::parameters::convergence_threshold(0., GSM::parameters::sliver_bound(0., params::visitor(
+            [&](const GSM::Round_report& r) { rounds.push_back(r); }))));
+    VVM_CHECK(stop == CGAL::CONVERGENCE_REACHED);
+    VVM_CHECK(rounds.size() >= 3 && rounds.size() < 50);
+    VVM_CHECK(rounds.back().number_of_moves > 0); // the rounds were still moving vertices
+    // the last two rounds did not raise the smallest angle over the best before them
+    double best = 0;
+    for(std::size_t k = 0; k + 2 < rounds.size(); ++k) best = (std::max)(best, rounds[k].min_dihedral_angle);
+    VVM_CHECK(rounds[rounds.size() - 2].min_dihedral_angle <= best + 0.01);
+    VVM_CHECK(rounds.back().min_dihedral_angle <= best + 0.02);
+    VVM_CHECK(complex_is_valid(stalled));
+    std::printf("  sphere, energy rounds without threshold: %zu rounds, min dihedral %.2f\n", rounds.size(),
+                rounds.back().min_dihedral_angle);
+  }
+
   // ESM runs too, and is no match for GSM on slivers
   Implicit_c3t3 esm = make_sphere_mesh(0.2);
   CGAL::gsm_optimize_mesh_3(esm, domain, GSM::parameters::energy(GSM::Shape_matching_energy::ESM));

@@ -196,7 +196,11 @@ gsm_optimize(C3T3& c3t3, const MeshDomain* domain, bool boundary_fixed, const Na
  * regular tetrahedron of the target size (dissertation ch. 3). Slivers have a
  * huge GSM energy, so they are removed first.
  *
- * Once the rounds have converged, a polishing stage lifts the cells whose
+ * The rounds stop when one lowers the mean energy by less than
+ * `convergence_threshold`, or when two rounds in a row have neither raised the
+ * smallest dihedral angle nor lowered the number of cells under `sliver_bound`
+ * (30 degrees if it is 0) by a 200th: past that point the energy creeps down
+ * while the worst cells stay as they are. Then a polishing stage lifts the cells whose
  * smallest dihedral angle is still under `sliver_bound` (typically next to the
  * surface, where vertices only slide): their vertices move up the gradient of
  * the smallest angle of their star, and, if that is not enough, one of their
@@ -244,7 +248,8 @@ gsm_optimize(C3T3& c3t3, const MeshDomain* domain, bool boundary_fixed, const Na
  *     \cgalParamDefault{0}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{GSM_mesh_optimization::parameters::convergence_threshold}
- *     \cgalParamDescription{stop when a round lowers the mean energy by less than this fraction}
+ *     \cgalParamDescription{stop when a round lowers the mean energy by less than this fraction
+ *       (the rounds also stop when the worst cells stop improving, see above)}
  *     \cgalParamType{double}
  *     \cgalParamDefault{1e-4}
  *   \cgalParamNEnd

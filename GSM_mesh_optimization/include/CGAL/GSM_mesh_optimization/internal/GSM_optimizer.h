@@ -98,6 +98,7 @@ public:
       std::cerr << "GSM: " << count << " cells, mean energy " << previous_mean << "\n";
 
     Mesh_optimization_return_code result = MAX_ITERATION_NUMBER_REACHED;
+    Worst_cells_progress progress(energy_, options_.sliver_bound > 0 ? options_.sliver_bound : default_bound);
     int round = 1;
     for(; round <= options_.max_rounds; ++round) {
       Round_report report;
@@ -126,7 +127,9 @@ public:
         result = CANT_IMPROVE_ANYMORE;
         break;
       }
-      if(decrease < options_.convergence) {
+      // the mean energy can creep down for dozens of rounds while the worst cells stay as
+      // they are or get worse (a graded or thin-walled mesh): those rounds buy nothing
+      if(decrease < options_.convergence || progress.stalled()) {
         result = CONVERGENCE_REACHED;
         break;
       }
@@ -141,19 +144,45 @@ private:
   static constexpr int max_stalled_passes = 2;
   static constexpr double min_angle_gain = 0.01; // degrees
 
+  static constexpr double default_bound = 30; // degrees, for the stop rule when there is no polishing
+
+  // Whether the worst cells still improve: false after `max_stalled_passes` calls in a row
+  // that neither raise the smallest angle by `min_angle_gain` nor lower the number of cells
+  // under the bound by a 200th of the best count so far.
+  class Worst_cells_progress
+  {
+  public:
+    Worst_cells_progress(const Mesh_energy<C3T3>& energy, double bound)
+      : energy_(energy), bound_(bound), best_(energy.worst_and_count_under(bound))
+    {}
+
+    bool stalled()
+    {
+      const auto now = energy_.worst_and_count_under(bound_);
+      const bool better = now.first > best_.first + min_angle_gain ||
+                          best_.second - (std::min)(best_.second, now.second) > best_.second / 200;
+      best_ = {(std::max)(best_.first, now.first), (std::min)(best_.second, now.second)};
+      stalled_ = better ? 0 : stalled_ + 1;
+      return stalled_ >= max_stalled_passes;
+    }
+
+  private:
+    const Mesh_energy<C3T3>& energy_;
+    double bound_;
+    std::pair<double, std::size_t> best_;
+    int stalled_ = 0;
+  };
+
   // rounds of the final stage, numbered on from the last round `round`, until one changes
-  // nothing or the worst cells stop improving: two passes in a row that neither raise the
-  // smallest angle nor lower the number of cells under the bound by a 200th (on a mesh that
-  // cannot reach the bound, such as a steeply graded one, passes go on moving vertices
-  // back and forth for nothing)
+  // nothing or the worst cells stop improving (on a mesh that cannot reach the bound, such
+  // as a steeply graded one, passes go on moving vertices back and forth for nothing)
   void polish(int round, Energy_guided_flips<C3T3>& flips, double& sum, std::size_t& count,
               const CGAL::Real_timer& timer)
   {
     Edge_split<C3T3> splits(c3t3_, energy_, sum, count);
     Sliver_polisher<C3T3, MeshDomain> polisher(c3t3_, energy_, smoother_, flips, splits, options_.sliver_bound,
                                                options_.do_split, options_.freeze_boundary);
-    auto best = polisher.worst_and_count_under_bound();
-    int stalled = 0;
+    Worst_cells_progress progress(energy_, options_.sliver_bound);
     for(int pass = 0; pass < max_polishing_passes && !time_is_up(timer); ++pass) {
       const double start = timer.time();
       const auto done = polisher.polish_pass([&]() { return time_is_up(timer); });
@@ -170,12 +199,7 @@ private:
       report.elapsed_time = timer.time();
       notify(report, report.elapsed_time - start, 0);
       if(done.moves == 0 && done.peels == 0 && done.splits == 0) break;
-      const auto now = polisher.worst_and_count_under_bound();
-      const bool better = now.first > best.first + min_angle_gain ||
-                          best.second - (std::min)(best.second, now.second) > best.second / 200;
-      best = {(std::max)(best.first, now.first), (std::min)(best.second, now.second)};
-      stalled = better ? 0 : stalled + 1;
-      if(stalled == max_stalled_passes) break;
+      if(progress.stalled()) break;
     }
   }
 

@@ -17,9 +17,11 @@
 
 #include <Eigen/Core>
 
+#include <algorithm>
 #include <array>
 #include <memory>
 #include <type_traits>
+#include <utility>
 
 namespace CGAL {
 namespace GSM_mesh_optimization {
@@ -193,6 +195,20 @@ public:
     for(auto c = c3t3_.cells_in_complex_begin(); c != c3t3_.cells_in_complex_end(); ++c, ++n)
       sum += cell(c);
     return {sum, n};
+  }
+
+  /// the smallest dihedral angle (degrees, in the metric) of the cells in the complex, and how
+  /// many of them are under `bound`
+  std::pair<double, std::size_t> worst_and_count_under(double bound) const
+  {
+    double worst = 180;
+    std::size_t n = 0;
+    for(auto c = c3t3_.cells_in_complex_begin(); c != c3t3_.cells_in_complex_end(); ++c) {
+      const double q = min_dihedral_angle(c);
+      worst = (std::min)(worst, q);
+      n += q < bound ? 1 : 0;
+    }
+    return {worst, n};
   }
 
 private:

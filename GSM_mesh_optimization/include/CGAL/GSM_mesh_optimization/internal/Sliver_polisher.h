@@ -111,19 +111,6 @@ public:
     return done;
   }
 
-  /// the smallest dihedral angle of the cells in the complex and the number of them under the bound
-  std::pair<double, std::size_t> worst_and_count_under_bound() const
-  {
-    double worst = 180;
-    std::size_t n = 0;
-    for(auto c = c3t3_.cells_in_complex_begin(); c != c3t3_.cells_in_complex_end(); ++c) {
-      const double q = energy_.min_dihedral_angle(c);
-      worst = (std::min)(worst, q);
-      n += q < bound_ ? 1 : 0;
-    }
-    return {worst, n};
-  }
-
 private:
   static constexpr int max_moves_per_vertex = 4;
   /// at most this fraction of the vertex count is added: a mesh far from the bound
