@@ -146,9 +146,10 @@ private:
 
   static constexpr double default_bound = 30; // degrees, for the stop rule when there is no polishing
 
-  // Whether the worst cells still improve: false after `max_stalled_passes` calls in a row
-  // that neither raise the smallest angle by `min_angle_gain` nor lower the number of cells
-  // under the bound by a 200th of the best count so far.
+  // Whether the worst cells have stopped improving: `stalled()` is true after
+  // `max_stalled_passes` calls in a row that neither raise the smallest angle by
+  // `min_angle_gain` nor lower the number of cells under the bound by a 200th of the best
+  // count so far.
   class Worst_cells_progress
   {
   public:
