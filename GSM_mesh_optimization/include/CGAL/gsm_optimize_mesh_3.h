@@ -198,16 +198,25 @@ gsm_optimize(C3T3& c3t3, const MeshDomain* domain, bool boundary_fixed, const Na
  *
  * The rounds stop when one lowers the mean energy by less than
  * `convergence_threshold`, or when two rounds in a row have neither raised the
- * smallest dihedral angle nor lowered the number of cells under `sliver_bound`
- * (30 degrees if it is 0) by a 200th: past that point the energy creeps down
- * while the worst cells stay as they are. Then a polishing stage lifts the cells whose
+ * smallest dihedral angle by 0.05 degree nor lowered the number of cells under
+ * `sliver_bound` (30 degrees if it is 0) by a 100th: past that point the energy
+ * creeps down while the worst cells stay as they are. Then a polishing stage lifts the cells whose
  * smallest dihedral angle is still under `sliver_bound` (typically next to the
- * surface, where vertices only slide): their vertices move up the gradient of
- * the smallest angle of their star, and, if that is not enough, one of their
- * interior edges is split by a new interior vertex when that raises the
- * smallest angle around the edge. Polishing trades a little energy (the new
+ * surface, where vertices only slide). The worst of them, a 200th of the cells
+ * at most, are lifted whatever it costs: their vertices move up the gradient of
+ * the smallest angle of their star. The vertices of the others move, and edges
+ * around them are removed, only when that lowers the sum over the cells touched of
+ * a penalty of each cell's smallest angle (steep under 60 degrees), so that a
+ * steeply graded or thin-walled mesh with thousands of cells under the bound does
+ * not trade its bulk for them. If that is not enough, one interior edge of a cell
+ * is split by a new interior vertex when that raises the smallest angle around
+ * the edge (and, for the cells that are not the worst, lowers the penalty), adding
+ * at most 3% of the vertex count. Polishing trades a little energy (the new
  * cells are smaller than the target) for the worst angles; `split_edges(false)`
- * keeps the vertex set, `sliver_bound(0)` skips the stage.
+ * keeps the vertex set, `sliver_bound(0)` skips the stage. Its passes stop when
+ * two in a row have neither raised the smallest angle by half a degree nor
+ * lowered the number of cells under the bound by a 50th (on a mesh that cannot
+ * reach the bound, each further pass would gain a tenth of a degree).
  *
  * It is meant as the final stage after `make_mesh_3()` (with or without Lloyd or
  * ODT), in place of `perturb_mesh_3()` and `exude_mesh_3()`. Vertex moves and
@@ -278,7 +287,7 @@ gsm_optimize(C3T3& c3t3, const MeshDomain* domain, bool boundary_fixed, const Na
  *   \cgalParamNEnd
  *   \cgalParamNBegin{GSM_mesh_optimization::parameters::split_edges}
  *     \cgalParamDescription{whether the polishing may split interior edges of the cells under the
- *       sliver bound, adding interior vertices (at most 10% of the vertex count)}
+ *       sliver bound, adding interior vertices (at most 3% of the vertex count)}
  *     \cgalParamType{bool}
  *     \cgalParamDefault{true}
  *   \cgalParamNEnd

@@ -7,7 +7,9 @@
 // by the 2(m - 2) cells (a, t) and (b, t) over the triangles t of a
 // triangulation of the ring polygon. The triangulation is the one of least
 // energy sum with every new cell positively oriented, from Klincsek's O(m^3)
-// dynamic program. m = 4 is the 4-4 flip.
+// dynamic program. m = 4 is the 4-4 flip. For the polishing, the same program
+// finds the triangulation of least sum of a penalty of the cells' smallest
+// dihedral angles instead (Angle_penalty.h); m = 3 is then the 3-2 flip.
 //
 // It is made combinatorially, with the triangulation data structure's unchecked
 // flips: m - 3 2-3 flips of the facets (a, b, r_j), each cutting an ear
@@ -104,47 +106,109 @@ public:
   /// triangulation of its ring lowers the mean energy
   bool try_remove_edge(const Edge& e, std::size_t max_ring)
   {
-    std::vector<Cell_handle> ring;
-    std::vector<Vertex_handle> r;
-    Subdomain_index s;
-    if(!this->removable_edge(e, ring, r, s, max_ring) || ring.size() < 4) return false;
-    const int m = int(ring.size());
-    const Vertex_handle a = e.first->vertex(e.second), b = e.first->vertex(e.third);
-    // cells[i] = (a, b, r_i, r_{i+1}); turn the ring so that these are positive
-    std::vector<Cell_handle> cells(m);
-    for(int i = 0; i < m; ++i) cells[i] = ring[(i + 1) % m];
-    const CGAL::Orientation o = this->orientation(a, b, r[0], r[1]);
-    if(o == CGAL::ZERO) return false;
-    if(o == CGAL::NEGATIVE) {
-      std::reverse(r.begin(), r.end());
-      std::reverse(cells.begin(), cells.end());
-      std::rotate(cells.begin(), cells.begin() + 1, cells.end());
-    }
+    Ring g;
+    if(!make_ring(e, max_ring, 4, g)) return false;
+    const int m = int(g.r.size());
     double old_sum = 0;
-    for(const Cell_handle& c : cells) old_sum += this->energy_.cell(c);
-    // then (a, r_i, r_j, r_k) and (b, r_i, r_k, r_j), i < j < k, must be positive;
+    for(const Cell_handle& c : g.cells) old_sum += this->energy_.cell(c);
     // the bound is the criterion of lowers_mean()
-    const double infinity = std::numeric_limits<double>::infinity();
     const Polygon_triangulation t = best_polygon_triangulation(m, [&](int i, int j, int k) {
-      if(this->orientation(a, r[i], r[j], r[k]) != CGAL::POSITIVE ||
-         this->orientation(b, r[i], r[k], r[j]) != CGAL::POSITIVE)
-        return infinity;
-      return this->tet_energy(a, r[i], r[j], r[k]) + this->tet_energy(b, r[i], r[j], r[k]);
+      if(!is_positive(g, i, j, k)) return infinity;
+      return this->tet_energy(g.a, g.r[i], g.r[j], g.r[k]) + this->tet_energy(g.b, g.r[i], g.r[j], g.r[k]);
     }, old_sum + double(m - 4) * this->mean());
     if(t.triangles.empty() || !this->lowers_mean(old_sum, t.cost, m - 4)) return false;
+    replace(g, t, old_sum, t.cost);
+    return true;
+  }
 
-    this->release(cells);
-    flip_ring(a, b, r, cells, t);
-    std::vector<Cell_handle> new_cells;
+  /// removes the edge `e` with 3 to `max_ring` cells around it, if the triangulation of
+  /// its ring of least `penalty` sum (of the smallest dihedral angle of each cell) lowers
+  /// that sum, whatever the energy
+  template <class Penalty>
+  bool try_remove_edge_for_quality(const Edge& e, std::size_t max_ring, const Penalty& penalty)
+  {
+    Ring g;
+    if(!make_ring(e, max_ring, 3, g)) return false;
+    const int m = int(g.r.size());
+    double old_penalty = 0, old_sum = 0;
+    for(const Cell_handle& c : g.cells) {
+      old_penalty += penalty(this->energy_.min_dihedral_angle(c));
+      old_sum += this->energy_.cell(c);
+    }
+    const auto angle = [&](const Vertex_handle& v, int i, int j, int k) {
+      return this->energy_.min_dihedral_angle(this->energy_.position(v), this->energy_.position(g.r[i]),
+                                              this->energy_.position(g.r[j]), this->energy_.position(g.r[k]));
+    };
+    const Polygon_triangulation t = best_polygon_triangulation(m, [&](int i, int j, int k) {
+      if(!is_positive(g, i, j, k)) return infinity;
+      return penalty(angle(g.a, i, j, k)) + penalty(angle(g.b, i, j, k));
+    }, (1 - min_relative_gain) * old_penalty);
+    if(t.triangles.empty()) return false;
+    double new_sum = 0;
     for(const auto& tri : t.triangles)
-      for(const Cell_handle& c : this->cells_on(r[tri[0]], r[tri[1]], r[tri[2]])) new_cells.push_back(c);
-    CGAL_assertion(new_cells.size() == std::size_t(2 * (m - 2)));
-    this->claim(new_cells, s);
-    this->account(old_sum, t.cost, m - 4);
+      new_sum += this->tet_energy(g.a, g.r[tri[0]], g.r[tri[1]], g.r[tri[2]]) +
+                 this->tet_energy(g.b, g.r[tri[0]], g.r[tri[1]], g.r[tri[2]]);
+    replace(g, t, old_sum, new_sum);
     return true;
   }
 
 private:
+  static constexpr double infinity = std::numeric_limits<double>::infinity();
+  // the least share of the penalty sum a removal for quality must save
+  static constexpr double min_relative_gain = 1e-4;
+
+  // an edge (a, b) to remove, its ring r_0 .. r_{m-1}, the cells (a, b, r_i, r_{i+1})
+  // in that order, all positive, and their subdomain
+  struct Ring
+  {
+    Vertex_handle a, b;
+    std::vector<Vertex_handle> r;
+    std::vector<Cell_handle> cells;
+    Subdomain_index s;
+  };
+
+  // the ring of `e`, if it is removable and has `min_size` to `max_ring` cells
+  bool make_ring(const Edge& e, std::size_t max_ring, std::size_t min_size, Ring& g) const
+  {
+    std::vector<Cell_handle> ring;
+    if(!this->removable_edge(e, ring, g.r, g.s, max_ring) || ring.size() < min_size) return false;
+    const std::size_t m = ring.size();
+    g.a = e.first->vertex(e.second);
+    g.b = e.first->vertex(e.third);
+    // cells[i] = (a, b, r_i, r_{i+1}); turn the ring so that these are positive
+    g.cells.resize(m);
+    for(std::size_t i = 0; i < m; ++i) g.cells[i] = ring[(i + 1) % m];
+    const CGAL::Orientation o = this->orientation(g.a, g.b, g.r[0], g.r[1]);
+    if(o == CGAL::ZERO) return false;
+    if(o == CGAL::NEGATIVE) {
+      std::reverse(g.r.begin(), g.r.end());
+      std::reverse(g.cells.begin(), g.cells.end());
+      std::rotate(g.cells.begin(), g.cells.begin() + 1, g.cells.end());
+    }
+    return true;
+  }
+
+  // the new cells (a, r_i, r_j, r_k) and (b, r_i, r_k, r_j), i < j < k, are positive
+  bool is_positive(const Ring& g, int i, int j, int k) const
+  {
+    return this->orientation(g.a, g.r[i], g.r[j], g.r[k]) == CGAL::POSITIVE &&
+           this->orientation(g.b, g.r[i], g.r[k], g.r[j]) == CGAL::POSITIVE;
+  }
+
+  // replaces the cells of `g` (energies `old_sum`) by those over `t` (`new_sum`)
+  void replace(const Ring& g, const Polygon_triangulation& t, double old_sum, double new_sum)
+  {
+    const int m = int(g.r.size());
+    this->release(g.cells);
+    flip_ring(g.a, g.b, g.r, g.cells, t);
+    std::vector<Cell_handle> new_cells;
+    for(const auto& tri : t.triangles)
+      for(const Cell_handle& c : this->cells_on(g.r[tri[0]], g.r[tri[1]], g.r[tri[2]])) new_cells.push_back(c);
+    CGAL_assertion(new_cells.size() == std::size_t(2 * (m - 2)));
+    this->claim(new_cells, g.s);
+    this->account(old_sum, new_sum, m - 4);
+  }
+
   // the flips that make `t`; `cells[i]` is the cell (a, b, r_i, r_{i+1})
   void flip_ring(const Vertex_handle& a, const Vertex_handle& b, const std::vector<Vertex_handle>& r,
                  std::vector<Cell_handle> cells, const Polygon_triangulation& t)

@@ -20,6 +20,7 @@
 #ifndef CGAL_GSM_MESH_OPTIMIZATION_INTERNAL_EDGE_SPLIT_H
 #define CGAL_GSM_MESH_OPTIMIZATION_INTERNAL_EDGE_SPLIT_H
 
+#include <CGAL/GSM_mesh_optimization/internal/Angle_penalty.h>
 #include <CGAL/GSM_mesh_optimization/internal/Cell_replacement.h>
 
 #include <Eigen/Cholesky>
@@ -50,9 +51,13 @@ public:
   /// the largest number of cells around a split edge
   static constexpr std::size_t max_ring = 12;
 
-  Edge_split(C3T3& c3t3, const typename Base::Energy& energy, double& sum, std::size_t& count)
-    : Base(c3t3, energy, sum, count)
+  /// a split must also lower the sum of `penalty` over the smallest dihedral angles of the cells
+  Edge_split(C3T3& c3t3, const typename Base::Energy& energy, double& sum, std::size_t& count,
+             const Angle_penalty& penalty = Angle_penalty())
+    : Base(c3t3, energy, sum, count), penalty_(penalty)
   {}
+
+  void set_penalty(const Angle_penalty& penalty) { penalty_ = penalty; }
 
   /// splits the edge of the cell `c` whose split gives the largest smallest dihedral
   /// angle, if it beats the one of the cells around the edge; true if done: `c` is then gone
@@ -62,9 +67,9 @@ public:
     for(int i = 0; i < 4; ++i)
       for(int j = i + 1; j < 4; ++j) {
         Split s;
-        if(plan(Edge(c, i, j), s) && s.gain() > best.gain()) best = s;
+        if(plan(Edge(c, i, j), s) && s.is_better() && s.gain() > best.gain()) best = s;
       }
-    if(!(best.gain() > min_gain)) return false;
+    if(!best.is_better()) return false;
     apply(best);
     return true;
   }
@@ -73,7 +78,7 @@ public:
   bool try_split_edge(const Edge& e)
   {
     Split s;
-    if(!plan(e, s) || !(s.gain() > min_gain)) return false;
+    if(!plan(e, s) || !s.is_better()) return false;
     apply(s);
     return true;
   }
@@ -88,7 +93,10 @@ private:
     Eigen::Vector3d x;
     double old_sum = 0, new_sum = 0;
     double old_min = 0, new_min = 0; // smallest dihedral angles, degrees
+    double old_penalty = 0, new_penalty = 0;
+    bool critical = false; // the old cells' smallest angle is under the penalty's critical one
     double gain() const { return new_min - old_min; }
+    bool is_better() const { return gain() > min_gain && (critical || new_penalty < old_penalty); }
   };
 
   // where the new vertex goes: a few Newton steps of the energy of its star from
@@ -102,7 +110,9 @@ private:
     s.old_min = 180;
     for(const Cell_handle& c : s.ring) {
       s.old_sum += energy_.cell(c);
-      s.old_min = (std::min)(s.old_min, energy_.min_dihedral_angle(c));
+      const double q = energy_.min_dihedral_angle(c);
+      s.old_min = (std::min)(s.old_min, q);
+      s.old_penalty += penalty_(q);
     }
     s.x = 0.5 * (energy_.position(a) + energy_.position(b));
     s.new_sum = star_energy(s.ring, a, b, s.x);
@@ -113,6 +123,8 @@ private:
     for(int k = 0; k < ascent_steps; ++k)
       if(!lift(s.ring, a, b, length, s.x, s.new_min)) break;
     s.new_sum = star_energy(s.ring, a, b, s.x);
+    s.new_penalty = star_penalty(s.ring, a, b, s.x);
+    s.critical = s.old_min < penalty_.critical;
     return std::isfinite(s.new_sum);
   }
 
@@ -141,6 +153,16 @@ private:
         q = (std::min)(q, energy_.min_dihedral_angle(c, replaced, x));
       }
     return q;
+  }
+
+  // penalty of the 2m cells of the split with the new vertex at `x`
+  double star_penalty(const std::vector<Cell_handle>& ring, const Vertex_handle& a, const Vertex_handle& b,
+                      const Eigen::Vector3d& x) const
+  {
+    double p = 0;
+    for(const Cell_handle& c : ring)
+      for(const Vertex_handle& replaced : {a, b}) p += penalty_(energy_.min_dihedral_angle(c, replaced, x));
+    return p;
   }
 
   // one step up the gradient of star_quality (central differences: it is only
@@ -225,6 +247,8 @@ private:
       p[i] = c->vertex(i) == replaced ? Bare_point(x[0], x[1], x[2]) : this->bare(c->vertex(i));
     return tr_.geom_traits().orientation_3_object()(p[0], p[1], p[2], p[3]) == CGAL::POSITIVE;
   }
+
+  Angle_penalty penalty_;
 
   using Base::c3t3_;
   using Base::tr_;

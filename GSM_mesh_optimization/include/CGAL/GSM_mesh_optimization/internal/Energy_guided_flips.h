@@ -268,6 +268,14 @@ public:
   /// edge removal of `e`, with 4 to `max_ring` cells around it
   bool try_remove_edge(const Edge& e) { return edge_removal_.try_remove_edge(e, max_ring); }
 
+  /// edge removal of `e` (3-2 flip included), with 3 to `max_ring` cells around it, if it
+  /// lowers the sum of `penalty` over the smallest dihedral angles of the cells around `e`
+  template <class Penalty>
+  bool try_remove_edge_for_quality(const Edge& e, const Penalty& penalty)
+  {
+    return edge_removal_.try_remove_edge_for_quality(e, max_ring, penalty);
+  }
+
   /// multi-face removal from `f` on, of at most `max_faces` faces; returns how many
   int try_remove_faces(const Facet& f, int max_faces = max_ring - 2)
   {

@@ -42,8 +42,11 @@ struct Round_report
   int round = 0;              ///< 1 for the first round
   double energy = 0;          ///< mean energy of the cells in the complex (eq. 3.9)
   double min_dihedral_angle = 0; ///< degrees, over the cells in the complex
+  /// cells in the complex whose smallest dihedral angle, in the metric, is under the
+  /// sliver bound (30 degrees if the bound is 0)
+  std::size_t number_of_cells_under_bound = 0;
   std::size_t number_of_moves = 0; ///< vertices moved in this round
-  std::size_t number_of_flips = 0; ///< flips done in this round (in polishing: boundary peels)
+  std::size_t number_of_flips = 0; ///< flips done in this round (in polishing: edge removals and boundary peels)
   std::size_t number_of_splits = 0; ///< edges split in this round (new vertices)
   /// a round of the final polishing, which lifts the worst cells and may raise the energy
   bool is_polishing = false;
@@ -98,7 +101,9 @@ public:
       std::cerr << "GSM: " << count << " cells, mean energy " << previous_mean << "\n";
 
     Mesh_optimization_return_code result = MAX_ITERATION_NUMBER_REACHED;
-    Worst_cells_progress progress(energy_, options_.sliver_bound > 0 ? options_.sliver_bound : default_bound);
+    // the rounds stop once the worst cells gain less than 0.05 degree and the cells under the
+    // bound drop by less than a 100th, two rounds in a row: later rounds barely move them
+    Worst_cells_progress progress(energy_, bound(), round_angle_gain, round_count_share);
     int round = 1;
     for(; round <= options_.max_rounds; ++round) {
       Round_report report;
@@ -142,26 +147,34 @@ private:
   static constexpr int max_flip_passes = 5;
   static constexpr int max_polishing_passes = 20;
   static constexpr int max_stalled_passes = 2;
-  static constexpr double min_angle_gain = 0.01; // degrees
+  // what counts as progress of the worst cells (see `Worst_cells_progress`) in the rounds
+  // and in the polishing: the polishing's passes cost more and, on meshes that cannot
+  // reach the bound, raise the smallest angle by a tenth of a degree a pass while pushing
+  // more cells under the bound
+  static constexpr double round_angle_gain = 0.05; // degrees
+  static constexpr double round_count_share = 1. / 100;
+  static constexpr double polishing_angle_gain = 0.5; // degrees
+  static constexpr double polishing_count_share = 1. / 50;
 
   static constexpr double default_bound = 30; // degrees, for the stop rule when there is no polishing
 
   // Whether the worst cells have stopped improving: `stalled()` is true after
   // `max_stalled_passes` calls in a row that neither raise the smallest angle by
-  // `min_angle_gain` nor lower the number of cells under the bound by a 200th of the best
-  // count so far.
+  // `angle_gain` degrees nor lower the number of cells under the bound by `count_share`
+  // of the best count so far.
   class Worst_cells_progress
   {
   public:
-    Worst_cells_progress(const Mesh_energy<C3T3>& energy, double bound)
-      : energy_(energy), bound_(bound), best_(energy.worst_and_count_under(bound))
+    Worst_cells_progress(const Mesh_energy<C3T3>& energy, double bound, double angle_gain, double count_share)
+      : energy_(energy), bound_(bound), angle_gain_(angle_gain), count_share_(count_share),
+        best_(energy.worst_and_count_under(bound))
     {}
 
     bool stalled()
     {
       const auto now = energy_.worst_and_count_under(bound_);
-      const bool better = now.first > best_.first + min_angle_gain ||
-                          best_.second - (std::min)(best_.second, now.second) > best_.second / 200;
+      const bool better = now.first > best_.first + angle_gain_ ||
+                          double(best_.second - (std::min)(best_.second, now.second)) > count_share_ * double(best_.second);
       best_ = {(std::max)(best_.first, now.first), (std::min)(best_.second, now.second)};
       stalled_ = better ? 0 : stalled_ + 1;
       return stalled_ >= max_stalled_passes;
@@ -169,7 +182,7 @@ private:
 
   private:
     const Mesh_energy<C3T3>& energy_;
-    double bound_;
+    double bound_, angle_gain_, count_share_;
     std::pair<double, std::size_t> best_;
     int stalled_ = 0;
   };
@@ -180,10 +193,10 @@ private:
   void polish(int round, Energy_guided_flips<C3T3>& flips, double& sum, std::size_t& count,
               const CGAL::Real_timer& timer)
   {
-    Edge_split<C3T3> splits(c3t3_, energy_, sum, count);
+    Edge_split<C3T3> splits(c3t3_, energy_, sum, count, Angle_penalty::for_bound(options_.sliver_bound));
     Sliver_polisher<C3T3, MeshDomain> polisher(c3t3_, energy_, smoother_, flips, splits, options_.sliver_bound,
                                                options_.do_split, options_.freeze_boundary);
-    Worst_cells_progress progress(energy_, options_.sliver_bound);
+    Worst_cells_progress progress(energy_, options_.sliver_bound, polishing_angle_gain, polishing_count_share);
     for(int pass = 0; pass < max_polishing_passes && !time_is_up(timer); ++pass) {
       const double start = timer.time();
       const auto done = polisher.polish_pass([&]() { return time_is_up(timer); });
@@ -192,30 +205,36 @@ private:
       report.is_polishing = true;
       report.number_of_moves = done.moves;
       report.number_of_splits = done.splits;
-      report.number_of_flips = done.peels;
+      report.number_of_flips = done.flips + done.peels;
       const auto total = energy_.total();
       sum = total.first;
       count = total.second;
       report.energy = sum / double(count);
       report.elapsed_time = timer.time();
       notify(report, report.elapsed_time - start, 0);
-      if(done.moves == 0 && done.peels == 0 && done.splits == 0) break;
+      if(done.moves == 0 && done.flips == 0 && done.peels == 0 && done.splits == 0) break;
       if(progress.stalled()) break;
     }
   }
 
   void notify(Round_report& report, double smoothing_time, double flip_time) const
   {
-    if(options_.visitor || options_.verbose)
+    if(options_.visitor || options_.verbose) {
       report.min_dihedral_angle = mesh_quality_statistics(c3t3_).min_dihedral_angle;
+      report.number_of_cells_under_bound = energy_.worst_and_count_under(bound()).second;
+    }
     if(options_.verbose)
       std::cerr << "GSM " << (report.is_polishing ? "polishing" : "round") << " " << report.round
                 << ": mean energy " << report.energy << ", min dihedral " << report.min_dihedral_angle << ", "
+                << report.number_of_cells_under_bound << " cells under " << bound() << ", "
                 << report.number_of_moves << " moves, " << report.number_of_flips << " flips, "
                 << report.number_of_splits << " splits, " << report.elapsed_time << " s (smoothing "
                 << smoothing_time << " s, flips " << flip_time << " s)\n";
     if(options_.visitor) options_.visitor(report);
   }
+
+  // the sliver bound, or the default one for the stop rule when there is no polishing
+  double bound() const { return options_.sliver_bound > 0 ? options_.sliver_bound : default_bound; }
 
   bool time_is_up(const CGAL::Real_timer& timer) const
   {

@@ -5,26 +5,38 @@
 // still under the sliver bound once the energy rounds have converged. The GSM
 // energy of a cell mixes shape and size, and its minimum over a vertex's star
 // is a compromise that can keep one poor cell, typically next to the surface,
-// where vertices only slide. Here the objective is the worst cell itself:
+// where vertices only slide. Here the objective is the cells' angles:
 //
-// - a vertex of a cell under the bound moves up the gradient of the smallest
-//   dihedral angle of its star (measured in the metric), within its degrees of
-//   freedom and with the smoother's projections and validity checks, when that
-//   raises the smallest angle of its star (max-min smoothing, as in Freitag and
-//   Ollivier-Gooch 1997);
+// - the critical cells, the worst 200th of the cells at most (all those
+//   under the bound on most meshes), are lifted whatever it costs the others:
+//   a vertex of one moves up the gradient of the smallest dihedral angle of its
+//   star (measured in the metric), within its degrees of freedom and with the
+//   smoother's projections and validity checks, when that raises it (max-min
+//   smoothing, as in Freitag and Ollivier-Gooch 1997);
+// - a vertex of the other cells under the bound moves down the gradient of its
+//   star's angle penalty (Angle_penalty.h), when that lowers it: on a steeply
+//   graded or thin-walled mesh with thousands of cells under the bound, max-min
+//   moves for all of them pushed more cells under 40 and 30 degrees than they lifted;
+// - an interior edge of a cell under the bound is removed (edge removal, 3-2
+//   flip included, Edge_removal.h) when the triangulation of its ring of least
+//   penalty beats the cells around it (Shewchuk 2002): a sliver whose vertices
+//   cannot move often goes with one of its edges;
 // - a cell with two surface facets of one patch is peeled off the complex (the
 //   boundary peel of Energy_guided_flips.h) when its two other facets stray from
 //   the surface no further than the boundary may (Boundary_fidelity.h); so is a cap
 //   with three, whose fourth facet becomes the surface;
 // - a cell that no move lifts gets an interior edge split (Edge_split.h) when the
-//   smallest angle of the new cells beats that of the old ones.
+//   smallest angle of the new cells beats that of the old ones, and, unless the
+//   cell is critical, the penalty of the new cells beats that of the old ones;
+//   at most 3% of the vertex count is added.
 //
-// Both raise the worst angle and may raise the energy a little: this stage runs
-// after the rounds whose energy never increases.
+// All may raise the energy a little: this stage runs after the rounds whose
+// energy never increases.
 
 #ifndef CGAL_GSM_MESH_OPTIMIZATION_INTERNAL_SLIVER_POLISHER_H
 #define CGAL_GSM_MESH_OPTIMIZATION_INTERNAL_SLIVER_POLISHER_H
 
+#include <CGAL/GSM_mesh_optimization/internal/Angle_penalty.h>
 #include <CGAL/GSM_mesh_optimization/internal/Edge_split.h>
 #include <CGAL/GSM_mesh_optimization/internal/Energy_guided_flips.h>
 #include <CGAL/GSM_mesh_optimization/internal/Vertex_smoother.h>
@@ -53,14 +65,14 @@ class Sliver_polisher
 public:
   struct Counts
   {
-    std::size_t moves = 0, peels = 0, splits = 0;
+    std::size_t moves = 0, flips = 0, peels = 0, splits = 0;
   };
 
   /// `bound`: the smallest dihedral angle sought, in degrees
   Sliver_polisher(C3T3& c3t3, const Energy& energy, const Smoother& smoother, Energy_guided_flips<C3T3>& flips,
                   Edge_split<C3T3>& splits, double bound, bool do_split, bool boundary_fixed)
     : c3t3_(c3t3), tr_(c3t3.triangulation()), energy_(energy), smoother_(smoother), flips_(flips), splits_(splits),
-      bound_(bound), do_split_(do_split), boundary_fixed_(boundary_fixed),
+      bound_(bound), penalty_(Angle_penalty::for_bound(bound)), do_split_(do_split), boundary_fixed_(boundary_fixed),
       split_budget_(std::size_t(max_split_fraction * double(c3t3.triangulation().number_of_vertices())))
   {}
 
@@ -70,8 +82,10 @@ public:
   Counts polish_pass(const Stop& stop)
   {
     Counts done;
+    const auto bad = bad_cells();
+    set_critical_angle(bad);
     std::vector<std::pair<double, Vertex_handle>> vertices;
-    for(const auto& b : bad_cells())
+    for(const auto& b : bad)
       for(const Vertex_handle& v : b.second) vertices.push_back({b.first, v});
     // stable, on the angle only: handles compare by address in some triangulations
     std::stable_sort(vertices.begin(), vertices.end(),
@@ -87,6 +101,10 @@ public:
         if(!smoother_.make_ring(v, ring) || !lift(ring)) break;
         ++done.moves;
       }
+    }
+    for(const auto& b : bad_cells()) {
+      if(stop()) return done;
+      if(remove_an_edge(b.second)) ++done.flips;
     }
     if(!boundary_fixed_)
       for(const auto& b : bad_cells()) {
@@ -116,8 +134,21 @@ private:
   /// at most this fraction of the vertex count is added: a mesh far from the bound
   /// everywhere (such as an isotropic mesh under a strongly anisotropic metric) needs
   /// remeshing, not splits
-  static constexpr double max_split_fraction = 0.1;
+  static constexpr double max_split_fraction = 0.03;
   static constexpr int max_backtracking_steps = 8;
+  /// at most this share of the cells is lifted whatever it costs the others
+  static constexpr double max_critical_share = 0.005;
+  /// the least share of its star's penalty a move must save
+  static constexpr double min_relative_gain = 1e-4;
+
+  // the critical angle: the bound, or that of the worst `max_critical_share` of the cells
+  // in the complex if more are under the bound
+  void set_critical_angle(const std::vector<std::pair<double, std::array<Vertex_handle, 4>>>& bad)
+  {
+    const std::size_t k = std::size_t(max_critical_share * double(c3t3_.number_of_cells_in_complex()));
+    penalty_.critical = bad.size() > k ? bad[k].first : bound_;
+    splits_.set_penalty(penalty_);
+  }
 
   // the cells in the complex under the bound, worst first, with their vertices
   std::vector<std::pair<double, std::array<Vertex_handle, 4>>> bad_cells() const
@@ -129,6 +160,20 @@ private:
     }
     std::stable_sort(bad.begin(), bad.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
     return bad;
+  }
+
+  // removes the first edge of the cell on `t` whose removal lowers the penalty around it
+  bool remove_an_edge(const std::array<Vertex_handle, 4>& t)
+  {
+    for(int i = 0; i < 4; ++i)
+      for(int j = i + 1; j < 4; ++j) {
+        Cell_handle c; // a removal replaces cells: find the edge again
+        int ei, ej;
+        if(tr_.is_edge(t[i], t[j], c, ei, ej) &&
+           flips_.try_remove_edge_for_quality(typename Tr::Edge(c, ei, ej), penalty_))
+          return true;
+      }
+    return false;
   }
 
   // peels `c` if it has two (three) surface facets of one patch and its others are faithful
@@ -152,19 +197,33 @@ private:
     return q;
   }
 
-  // moves the vertex of `r` up the gradient of its star's smallest angle; true if that raised it
+  // penalty of the star of the vertex of `r` placed at `x`
+  double star_penalty(const Ring& r, const Eigen::Vector3d& x) const
+  {
+    double p = 0;
+    for(const Cell_handle& c : r.complex_cells) p += penalty_(energy_.min_dihedral_angle(c, r.v, x));
+    return p;
+  }
+
+  // moves the vertex of `r`, whose star has a cell under the bound, up the gradient of
+  // its star's smallest angle if that is critical, else down the gradient of its star's
+  // penalty; true if that raised the one or lowered the other
   bool lift(const Ring& r) const
   {
     const Eigen::Vector3d x0 = energy_.position(r.v);
     const double q0 = star_quality(r, x0);
     if(!(q0 < bound_)) return false;
-    // central differences: the smallest angle is only piecewise smooth
+    const bool critical = q0 < penalty_.critical;
+    const auto score = [&](const Eigen::Vector3d& x) { return critical ? star_quality(r, x) : -star_penalty(r, x); };
+    const double s0 = score(x0);
+    const double least_gain = critical ? 1e-3 : -min_relative_gain * s0;
+    // central differences: both are only piecewise smooth
     const double h = 1e-4 * r.max_neighbor_distance;
     Eigen::Vector3d g;
     for(int k = 0; k < 3; ++k) {
       Eigen::Vector3d e = Eigen::Vector3d::Zero();
       e[k] = h;
-      g[k] = (star_quality(r, x0 + e) - star_quality(r, x0 - e)) / (2 * h);
+      g[k] = score(x0 + e) - score(x0 - e);
     }
     Eigen::Vector3d d = smoother_.tangential(r, g);
     const double n = d.norm();
@@ -174,7 +233,7 @@ private:
     for(int k = 0; k < max_backtracking_steps; ++k, alpha *= 0.5) {
       Bare_point p;
       if(!smoother_.candidate(r, x0 + alpha * d, p) || !smoother_.is_valid_position(r, p)) continue;
-      if(star_quality(r, Energy::to_eigen(p)) > q0 + 1e-3 && smoother_.keeps_boundary_faithful(r, p)) {
+      if(score(Energy::to_eigen(p)) > s0 + least_gain && smoother_.keeps_boundary_faithful(r, p)) {
         smoother_.move(r.v, p);
         return true;
       }
@@ -189,6 +248,7 @@ private:
   Energy_guided_flips<C3T3>& flips_;
   Edge_split<C3T3>& splits_;
   double bound_;
+  Angle_penalty penalty_;
   bool do_split_;
   bool boundary_fixed_;
   std::size_t split_budget_;
