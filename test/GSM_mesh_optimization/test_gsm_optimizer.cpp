@@ -218,12 +218,23 @@ struct Flip_fixture
 // the two tets (a, b, c, p), (a, b, c, q) when h is large (1.2: total energy
 // 2.25 against 7.49) and the three around (p, q) when h is small (0.15: 40.3
 // against 60.6). Starting from the worse one, the flip must be taken.
+// the triangle (a, b, c) pierced by the segment (p, q) at height h, not yet in the complex
+struct Pierced_triangle : Flip_fixture
+{
+  Implicit_tr& tr = c3t3.triangulation();
+  const Vertex_handle a, b, c, p, q;
+
+  explicit Pierced_triangle(double h)
+    : a(insert(tr, 1, 0, 0)), b(insert(tr, -0.5, 0.87, 0)), c(insert(tr, -0.5, -0.87, 0)), p(insert(tr, 0, 0, h)),
+      q(insert(tr, 0, 0, -h))
+  {}
+};
+
 void check_flip_from_worse(double h, bool expect_three)
 {
-  Flip_fixture f;
-  Implicit_tr& tr = f.c3t3.triangulation();
-  const Vertex_handle a = insert(tr, 1, 0, 0), b = insert(tr, -0.5, 0.87, 0), c = insert(tr, -0.5, -0.87, 0);
-  const Vertex_handle p = insert(tr, 0, 0, h), q = insert(tr, 0, 0, -h);
+  Pierced_triangle f(h);
+  Implicit_tr& tr = f.tr;
+  const Vertex_handle a = f.a, b = f.b, c = f.c, p = f.p, q = f.q;
   Implicit_tr::Cell_handle cell;
   int i, j, k;
   // Delaunay picks the other configuration; go to the worse one with CGAL's flips
@@ -506,10 +517,11 @@ void test_edge_removal()
 }
 
 // The polishing's angle penalty, by hand: (60 - q)^4 under 60 degrees for the bound 30,
-// and 0 over; cells under 25 degrees are the critical ones.
+// and 0 over.
 // Edge removal for quality on the pierced triangle of check_flip_from_worse: from the
 // three cells around (p, q), the 3-2 flip to (a, b, c, p), (a, b, c, q) is taken exactly
-// when the two cells' penalty sum is lower, the running energy sum stays exact, and at
+// when the two cells' penalty sum is lower and their worst angle no lower, the running
+// energy sum stays exact, and at
 // the heights tried both outcomes occur.
 void test_angle_penalty_and_edge_removal_for_quality()
 {
@@ -518,14 +530,13 @@ void test_angle_penalty_and_edge_removal_for_quality()
   VVM_CHECK_EQUAL(penalty(20), 2560000.);
   VVM_CHECK_EQUAL(penalty(60), 0.);
   VVM_CHECK_EQUAL(penalty(75), 0.);
-  VVM_CHECK_EQUAL(penalty.critical, 25.);
+  VVM_CHECK_EQUAL(penalty.critical, 30.); // every cell under the bound, until the polisher narrows it
 
   int removed = 0, kept = 0;
   for(double h : {0.05, 0.15, 0.3, 0.6, 1.2}) {
-    Flip_fixture f;
-    Implicit_tr& tr = f.c3t3.triangulation();
-    const Vertex_handle a = insert(tr, 1, 0, 0), b = insert(tr, -0.5, 0.87, 0), c = insert(tr, -0.5, -0.87, 0);
-    const Vertex_handle p = insert(tr, 0, 0, h), q = insert(tr, 0, 0, -h);
+    Pierced_triangle f(h);
+    Implicit_tr& tr = f.tr;
+    const Vertex_handle a = f.a, b = f.b, c = f.c, p = f.p, q = f.q;
     Implicit_tr::Cell_handle cell;
     int i, j, k;
     if(!tr.is_edge(p, q, cell, i, j)) VVM_CHECK(tr.is_facet(a, b, c, cell, i, j, k) && tr.flip(cell, 6 - i - j - k));
@@ -538,12 +549,14 @@ void test_angle_penalty_and_edge_removal_for_quality()
     };
     const double three = penalty(angle(a, b, p, q)) + penalty(angle(b, c, p, q)) + penalty(angle(c, a, p, q));
     const double two = penalty(angle(a, b, c, p)) + penalty(angle(a, b, c, q));
+    const double worst_three = (std::min)({angle(a, b, p, q), angle(b, c, p, q), angle(c, a, p, q)});
+    const double worst_two = (std::min)(angle(a, b, c, p), angle(a, b, c, q));
     VVM_CHECK(tr.is_edge(p, q, cell, i, j));
     auto flips = f.flips();
     const bool done = flips.try_remove_edge_for_quality(Implicit_tr::Edge(cell, i, j), penalty);
     std::printf("  pierced triangle h = %.2f: penalty %.4g around (p, q), %.4g for the two cells: %s\n", h, three,
                 two, done ? "removed" : "kept");
-    VVM_CHECK_EQUAL(done, two < (1 - 1e-4) * three);
+    VVM_CHECK_EQUAL(done, two < (1 - 1e-4) * three && worst_two >= worst_three);
     VVM_CHECK_EQUAL(tr.is_edge(p, q, cell, i, j), !done);
     VVM_CHECK_EQUAL(f.c3t3.number_of_cells_in_complex(), std::size_t(done ? 2 : 3));
     VVM_CHECK(complex_is_valid(f.c3t3));
@@ -1161,7 +1174,10 @@ void test_input_mesh_sizing()
               qu.n_min_dihedral_below[2]);
   VVM_CHECK(before > 1.8);
   VVM_CHECK(std::abs(after / before - 1) < 0.1);
-  VVM_CHECK(after_uniform < 0.9 * before); // what the default avoids: one size fights the grading
+  // what the default avoids: one size fights the grading (1.90 -> 1.72 when written), by at
+  // least twice as much as the input's own sizes do
+  VVM_CHECK(after_uniform < 0.93 * before);
+  VVM_CHECK(std::abs(after / before - 1) < 0.5 * std::abs(after_uniform / before - 1));
   VVM_CHECK(complex_is_valid(local));
   VVM_CHECK(q.min_dihedral_angle > 25 && q.n_min_dihedral_below[2] < q0.n_min_dihedral_below[2] / 10);
 }

@@ -206,7 +206,8 @@ gsm_optimize(C3T3& c3t3, const MeshDomain* domain, bool boundary_fixed, const Na
  * at most, are lifted whatever it costs: their vertices move up the gradient of
  * the smallest angle of their star. The vertices of the others move, and edges
  * around them are removed, only when that lowers the sum over the cells touched of
- * a penalty of each cell's smallest angle (steep under 60 degrees), so that a
+ * a penalty of each cell's smallest angle, `(sliver_bound + 30 - q)^4` under
+ * `sliver_bound + 30` degrees, so that a
  * steeply graded or thin-walled mesh with thousands of cells under the bound does
  * not trade its bulk for them. If that is not enough, one interior edge of a cell
  * is split by a new interior vertex when that raises the smallest angle around
@@ -332,7 +333,8 @@ gsm_optimize(C3T3& c3t3, const MeshDomain* domain, bool boundary_fixed, const Na
  *   \cgalParamNEnd
  *   \cgalParamNBegin{visitor}
  *     \cgalParamDescription{called after each round, and each polishing round, with its
- *       `GSM_mesh_optimization::Round_report` (mean energy, min dihedral angle, moves, flips,
+ *       `GSM_mesh_optimization::Round_report` (mean energy, min dihedral angle, cells under the
+ *       sliver bound, moves, flips,
  *       splits, time)}
  *     \cgalParamType{a callable `void(const GSM_mesh_optimization::Round_report&)`}
  *     \cgalParamDefault{none}

@@ -123,16 +123,20 @@ public:
 
   /// removes the edge `e` with 3 to `max_ring` cells around it, if the triangulation of
   /// its ring of least `penalty` sum (of the smallest dihedral angle of each cell) lowers
-  /// that sum, whatever the energy
+  /// that sum by `Penalty::min_relative_gain` of it without lowering the smallest angle of
+  /// the cells, whatever the energy (for m = 3, a 3-2
+  /// flip by that criterion rather than `try_flip_3_2()`'s energy)
   template <class Penalty>
   bool try_remove_edge_for_quality(const Edge& e, std::size_t max_ring, const Penalty& penalty)
   {
     Ring g;
     if(!make_ring(e, max_ring, 3, g)) return false;
     const int m = int(g.r.size());
-    double old_penalty = 0, old_sum = 0;
+    double old_penalty = 0, old_sum = 0, old_angle = 180;
     for(const Cell_handle& c : g.cells) {
-      old_penalty += penalty(this->energy_.min_dihedral_angle(c));
+      const double q = this->energy_.min_dihedral_angle(c);
+      old_penalty += penalty(q);
+      old_angle = (std::min)(old_angle, q);
       old_sum += this->energy_.cell(c);
     }
     const auto angle = [&](const Vertex_handle& v, int i, int j, int k) {
@@ -142,20 +146,21 @@ public:
     const Polygon_triangulation t = best_polygon_triangulation(m, [&](int i, int j, int k) {
       if(!is_positive(g, i, j, k)) return infinity;
       return penalty(angle(g.a, i, j, k)) + penalty(angle(g.b, i, j, k));
-    }, (1 - min_relative_gain) * old_penalty);
+    }, (1 - Penalty::min_relative_gain) * old_penalty);
     if(t.triangles.empty()) return false;
+    // a sum of penalties may trade several poor cells for one worse: never below the worst old one
     double new_sum = 0;
-    for(const auto& tri : t.triangles)
+    for(const auto& tri : t.triangles) {
+      if((std::min)(angle(g.a, tri[0], tri[1], tri[2]), angle(g.b, tri[0], tri[1], tri[2])) < old_angle) return false;
       new_sum += this->tet_energy(g.a, g.r[tri[0]], g.r[tri[1]], g.r[tri[2]]) +
                  this->tet_energy(g.b, g.r[tri[0]], g.r[tri[1]], g.r[tri[2]]);
+    }
     replace(g, t, old_sum, new_sum);
     return true;
   }
 
 private:
   static constexpr double infinity = std::numeric_limits<double>::infinity();
-  // the least share of the penalty sum a removal for quality must save
-  static constexpr double min_relative_gain = 1e-4;
 
   // an edge (a, b) to remove, its ring r_0 .. r_{m-1}, the cells (a, b, r_i, r_{i+1})
   // in that order, all positive, and their subdomain

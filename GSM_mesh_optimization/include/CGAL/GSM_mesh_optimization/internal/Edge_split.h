@@ -10,8 +10,10 @@
 // of a positively oriented cell; from there x takes a few damped Newton steps
 // of the energy of its star, each keeping every new cell positive, then climbs
 // the smallest dihedral angle of its star. The split is kept if that angle beats
-// the smallest one of the old cells: splits serve the final polishing
-// (Sliver_polisher.h), not the energy, which smaller cells raise.
+// the smallest one of the old cells and, unless the old cells are critical, if
+// the new cells' angle penalty (Angle_penalty.h) is below the old ones': splits
+// serve the final polishing (Sliver_polisher.h), not the energy, which smaller
+// cells raise.
 //
 // The edge must be a removable one: no feature edge, on no surface facet,
 // inside one subdomain; the new vertex is interior (dimension 3) and takes
@@ -51,7 +53,8 @@ public:
   /// the largest number of cells around a split edge
   static constexpr std::size_t max_ring = 12;
 
-  /// a split must also lower the sum of `penalty` over the smallest dihedral angles of the cells
+  /// a split of cells that are not critical must also lower the sum of `penalty` over
+  /// their smallest dihedral angles (by default every cell under 30 degrees is critical)
   Edge_split(C3T3& c3t3, const typename Base::Energy& energy, double& sum, std::size_t& count,
              const Angle_penalty& penalty = Angle_penalty())
     : Base(c3t3, energy, sum, count), penalty_(penalty)
@@ -60,7 +63,8 @@ public:
   void set_penalty(const Angle_penalty& penalty) { penalty_ = penalty; }
 
   /// splits the edge of the cell `c` whose split gives the largest smallest dihedral
-  /// angle, if it beats the one of the cells around the edge; true if done: `c` is then gone
+  /// angle, if it beats the one of the cells around the edge (and, unless they are
+  /// critical, lowers their penalty); true if done: `c` is then gone
   bool try_split_cell(const Cell_handle& c)
   {
     Split best;
@@ -74,7 +78,8 @@ public:
     return true;
   }
 
-  /// splits the edge `e`, if that raises the smallest dihedral angle around it
+  /// splits the edge `e`, if that raises the smallest dihedral angle around it (and,
+  /// unless the cells around it are critical, lowers their penalty)
   bool try_split_edge(const Edge& e)
   {
     Split s;
@@ -124,7 +129,7 @@ private:
       if(!lift(s.ring, a, b, length, s.x, s.new_min)) break;
     s.new_sum = star_energy(s.ring, a, b, s.x);
     s.new_penalty = star_penalty(s.ring, a, b, s.x);
-    s.critical = s.old_min < penalty_.critical;
+    s.critical = penalty_.is_critical(s.old_min);
     return std::isfinite(s.new_sum);
   }
 

@@ -42,6 +42,7 @@
 #include <CGAL/GSM_mesh_optimization/internal/Vertex_smoother.h>
 
 #include <algorithm>
+#include <cmath>
 #include <array>
 #include <unordered_set>
 #include <utility>
@@ -76,8 +77,9 @@ public:
       split_budget_(std::size_t(max_split_fraction * double(c3t3.triangulation().number_of_vertices())))
   {}
 
-  /// one pass: the vertices of the cells under the bound, worst first, then the
-  /// splits of the cells still under it; it ends early when `stop()` says so
+  /// one pass over the cells under the bound, worst first: their vertices' moves, then
+  /// edge removals, peels and splits of the cells still under it; it ends early when
+  /// `stop()` says so
   template <class Stop>
   Counts polish_pass(const Stop& stop)
   {
@@ -104,7 +106,10 @@ public:
     }
     for(const auto& b : bad_cells()) {
       if(stop()) return done;
-      if(remove_an_edge(b.second)) ++done.flips;
+      Cell_handle c; // removals replace cells: skip those gone
+      const auto& t = b.second;
+      int i, j, k, l;
+      if(tr_.is_cell(t[0], t[1], t[2], t[3], c, i, j, k, l) && remove_an_edge(t)) ++done.flips;
     }
     if(!boundary_fixed_)
       for(const auto& b : bad_cells()) {
@@ -138,15 +143,15 @@ private:
   static constexpr int max_backtracking_steps = 8;
   /// at most this share of the cells is lifted whatever it costs the others
   static constexpr double max_critical_share = 0.005;
-  /// the least share of its star's penalty a move must save
-  static constexpr double min_relative_gain = 1e-4;
 
-  // the critical angle: the bound, or that of the worst `max_critical_share` of the cells
-  // in the complex if more are under the bound
+  // the critical angle: the bound, or just over that of the k-th worst cell, k the
+  // `max_critical_share` of the cells in the complex (at least 1), if more are under the
+  // bound (ties with it are critical too)
   void set_critical_angle(const std::vector<std::pair<double, std::array<Vertex_handle, 4>>>& bad)
   {
-    const std::size_t k = std::size_t(max_critical_share * double(c3t3_.number_of_cells_in_complex()));
-    penalty_.critical = bad.size() > k ? bad[k].first : bound_;
+    const std::size_t k =
+        (std::max)(std::size_t(1), std::size_t(max_critical_share * double(c3t3_.number_of_cells_in_complex())));
+    penalty_.critical = bad.size() > k ? std::nextafter(bad[k - 1].first, 180.) : bound_;
     splits_.set_penalty(penalty_);
   }
 
@@ -213,10 +218,10 @@ private:
     const Eigen::Vector3d x0 = energy_.position(r.v);
     const double q0 = star_quality(r, x0);
     if(!(q0 < bound_)) return false;
-    const bool critical = q0 < penalty_.critical;
+    const bool critical = penalty_.is_critical(q0);
     const auto score = [&](const Eigen::Vector3d& x) { return critical ? star_quality(r, x) : -star_penalty(r, x); };
     const double s0 = score(x0);
-    const double least_gain = critical ? 1e-3 : -min_relative_gain * s0;
+    const double least_gain = critical ? 1e-3 : -Angle_penalty::min_relative_gain * s0;
     // central differences: both are only piecewise smooth
     const double h = 1e-4 * r.max_neighbor_distance;
     Eigen::Vector3d g;
@@ -233,7 +238,9 @@ private:
     for(int k = 0; k < max_backtracking_steps; ++k, alpha *= 0.5) {
       Bare_point p;
       if(!smoother_.candidate(r, x0 + alpha * d, p) || !smoother_.is_valid_position(r, p)) continue;
-      if(score(Energy::to_eigen(p)) > s0 + least_gain && smoother_.keeps_boundary_faithful(r, p)) {
+      // a sum of penalties may trade several poor cells for one worse: never below the star's worst
+      if(score(Energy::to_eigen(p)) > s0 + least_gain && (critical || star_quality(r, Energy::to_eigen(p)) >= q0) &&
+         smoother_.keeps_boundary_faithful(r, p)) {
         smoother_.move(r.v, p);
         return true;
       }
