@@ -37,7 +37,7 @@ const char* usage =
     "  INPUT  a closed triangle surface (OFF, OBJ, PLY, STL, ...), or cube, sphere, torus\n"
     "         (cube is [-1,1]^3, [0.1,1.1]^3 with fig4.8, [1,11]^3 with fig4.9; torus: radii 1 and 0.4 about y)\n"
     "  --vertices N        the vertex count of every method (default 10000): the lattice methods ask\n"
-    "                      for N particles (corrected once to land within 4%), make_mesh_3 for the\n"
+    "                      for N particles (corrected once if over 10% off), make_mesh_3 for the\n"
     "                      lattice meshes' count (within 3%)\n"
     "  --features-angle D  sharp edges of surfaces (default 0 = none; 60 for cube)\n"
     "  --field F           the frame field: identity (default), cross (generate_cross_field_3 on the\n"

@@ -619,6 +619,37 @@ void test_thread_independence()
 }
 
 // ---------------------------------------------------------------------------------------------
+// 5b. Without multiresolution_levels, BCC and FCC particles (1,500 here) come from the run of
+// 0 or 1 level of the lower energy per particle (compared before the last round, which only the
+// one kept runs): the default equals that one of the two runs made with the levels given.
+
+void test_multiresolution_choice()
+{
+  const Particles& chosen = cube_particles(2);
+  std::map<int, Particles> runs;
+  for(int levels : {0, 1})
+    runs[levels] = CGAL::lattice_particles_3(
+        *cube().domain, Constant_field(),
+        TLM::parameters::lattice(TLM::Lattice_type::BCC,
+            TLM::parameters::number_of_particles(std::size_t(1500),
+                TLM::parameters::multiresolution_levels(levels,
+                    TLM::parameters::number_of_threads(2, CGAL::parameters::random_seed(3u))))));
+  std::cout << "levels: 0 -> " << runs[0].size() << " particles, energy " << runs[0].energy
+            << "; 1 -> " << runs[1].size() << ", " << runs[1].energy
+            << "; default kept " << chosen.multiresolution_levels << " (" << chosen.size() << ", " << chosen.energy
+            << ")\n";
+  const int kept = runs[0].energy < runs[1].energy ? 0 : 1;
+  VVM_CHECK_EQUAL(runs[0].multiresolution_levels, 0);
+  VVM_CHECK_EQUAL(runs[1].multiresolution_levels, 1);
+  VVM_CHECK_EQUAL(chosen.multiresolution_levels, kept);
+  VVM_CHECK(chosen.energy == runs[kept].energy);
+  VVM_CHECK(chosen.points == runs[kept].points);
+  VVM_CHECK_EQUAL(chosen.number_of_rounds, runs[0].number_of_rounds + runs[1].number_of_rounds - 1);
+  // the cube's whole BCC lattice of 8 cells across, (8 + 1)^3 + 8^3 particles, from 1 level
+  VVM_CHECK_EQUAL(chosen.size(), std::size_t(9 * 9 * 9 + 8 * 8 * 8));
+}
+
+// ---------------------------------------------------------------------------------------------
 // 6. make_lattice_mesh_3 on the cube: a valid complex with correct labels.
 
 void check_cube_complex(const Cube_c3t3& c3t3, const TLM::Lattice_mesh_report& report, bool gsm)
@@ -912,6 +943,7 @@ int main(int argc, char** argv)
       {"particle_kinds_on_cube", test_particle_kinds_on_cube},
       {"particle_kinds_on_sphere", test_particle_kinds_on_sphere},
       {"thread_independence", test_thread_independence},
+      {"multiresolution_choice", test_multiresolution_choice},
       {"lattice_mesh_on_cube", test_lattice_mesh_on_cube},
       {"lattice_mesh_in_stretched_field", test_lattice_mesh_in_stretched_field},
       {"bad_inputs", test_bad_inputs}};

@@ -56,7 +56,8 @@ struct Lattice_particles_3
   Lattice lattice;            ///< the lattice and its constants
   double edge_length = 0;     ///< \f$ l^* \f$ used
   double energy = 0;          ///< the final GHK energy per particle
-  int number_of_rounds = 0;   ///< rounds run, all levels together
+  int number_of_rounds = 0;   ///< rounds run, all levels together (of the run kept)
+  int multiresolution_levels = 0; ///< the levels of the run kept
   double time = 0;            ///< seconds, boundary sampling included
   bool time_limit_reached = false;
 

@@ -20,8 +20,9 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
-#include <limits>
 #include <iostream>
+#include <limits>
+#include <memory>
 #include <numeric>
 #include <stdexcept>
 #include <string>
@@ -144,46 +145,69 @@ public:
 
   Lattice_particles_3<Point_3> run()
   {
+    optimize();
+    return finish();
+  }
+
+  /// Alg. 5 at every level but the last round of the finest one (the L-BFGS to convergence);
+  /// returns the energy per particle reached, by which `lattice_particles_3()` compares two starts
+  double optimize()
+  {
     timer_.start();
     const double sigma = o_.sigma > 0 ? o_.sigma : lattice_.sigma;
     const double radius = o_.radius > 0 ? o_.radius : lattice_.neighbor_radius;
     double l = l_ * std::pow(2., o_.levels);
-    auto system = std::make_unique<System>(lattice_, field_, &boundary_, l, sigma, radius);
-    random_start(*system);
-    Lattice_particles_3<Point_3> out;
+    system_ = std::make_unique<System>(lattice_, field_, &boundary_, l, sigma, radius);
+    random_start(*system_);
     for(int level = o_.levels; level >= 0; --level) {
       if(level < o_.levels) { // refine: the sites of the lattice of half the edge length
         auto finer = std::make_unique<System>(lattice_, field_, &boundary_, l / 2, sigma, radius);
-        finer->points = system->points;
-        finer->kinds = system->kinds;
-        finer->features = system->features;
-        finer->directions = system->directions;
-        finer->clearance = system->clearance;
-        finer->moved = system->moved;
+        finer->points = system_->points;
+        finer->kinds = system_->kinds;
+        finer->features = system_->features;
+        finer->directions = system_->directions;
+        finer->clearance = system_->clearance;
+        finer->moved = system_->moved;
         refine(*finer);
-        system = std::move(finer);
+        system_ = std::move(finer);
         l /= 2;
       }
       const int max_rounds = o_.max_rounds >= 0 ? o_.max_rounds : (level == o_.levels ? 16 : 8);
-      out.number_of_rounds += optimize_level(*system, o_.levels - level, level, max_rounds);
+      out_.number_of_rounds += optimize_level(*system_, level, max_rounds, level > 0);
       if(time_up()) {
-        out.time_limit_reached = true;
+        out_.time_limit_reached = true;
         break;
       }
     }
+    return energy_per_particle();
+  }
+
+  bool time_limit_reached() const { return out_.time_limit_reached; }
+  /// the rounds run so far
+  int number_of_rounds() const { return out_.number_of_rounds; }
+
+  /// the last round (unless the time is up) and the particles
+  Lattice_particles_3<Point_3> finish()
+  {
+    if(!out_.time_limit_reached) {
+      if(time_up()) out_.time_limit_reached = true;
+      else {
+        lattice_round(*system_, 0, last_round_number_, 1e-4, 100, 0, 0); // to convergence
+        ++out_.number_of_rounds;
+      }
+    }
     // the final projection may bring two particles together: keep one
-    remove_coincident(*system);
+    remove_coincident(*system_);
+    Lattice_particles_3<Point_3> out = out_;
     out.lattice = lattice_;
     out.edge_length = l_;
-    for(std::size_t i = 0; i < system->size(); ++i) {
-      const Eigen::Vector3d& p = system->points[i];
+    for(std::size_t i = 0; i < system_->size(); ++i) {
+      const Eigen::Vector3d& p = system_->points[i];
       out.points.emplace_back(p[0], p[1], p[2]);
     }
-    out.kinds = system->kinds;
-    out.features = system->features;
-    system->build_pairs();
-    Eigen::VectorXd g;
-    out.energy = system->size() ? system->energy_and_gradient(system->positions(), g) / double(system->size()) : 0.;
+    out.kinds = system_->kinds;
+    out.features = system_->features;
+    out.energy = energy_per_particle();
     out.time = timer_.time();
     return out;
   }
@@ -247,39 +271,51 @@ private:
     s.moved = copy.moved;
   }
 
-  // Alg. 5 at one edge length; returns the number of rounds
-  int optimize_level(System& s, int level_index, int level, int max_rounds)
+  double energy_per_particle()
   {
-    auto round = [&](int r, double eps, int its, std::size_t deleted, std::size_t inserted) {
-      const auto res = s.lbfgs_round(eps, its);
-      s.project();
-      Lattice_round_report rep;
-      rep.level = level;
-      rep.round = r;
-      rep.energy = s.size() ? res.energy / double(s.size()) : 0.;
-      rep.number_of_particles = s.size();
-      rep.number_deleted = deleted;
-      rep.number_inserted = inserted;
-      rep.lbfgs_iterations = res.iterations;
-      rep.time = timer_.time();
-      if(o_.verbose)
-        std::cerr << "  lattice level " << level << " round " << r << ": " << s.size() << " particles (-" << deleted
-                  << " +" << inserted << "), energy/particle " << rep.energy << ", " << res.iterations
-                  << " L-BFGS its, " << rep.time << " s\n";
-      if(o_.visitor) o_.visitor(rep);
-    };
-    (void)level_index;
+    if(system_->size() == 0) return 0.;
+    system_->build_pairs();
+    Eigen::VectorXd g;
+    return system_->energy_and_gradient(system_->positions(), g) / double(system_->size());
+  }
+
+  // a round of L-BFGS, the projection, and its report
+  void lattice_round(System& s, int level, int r, double eps, int its, std::size_t deleted, std::size_t inserted)
+  {
+    const auto res = s.lbfgs_round(eps, its);
+    s.project();
+    Lattice_round_report rep;
+    rep.level = level;
+    rep.round = r;
+    rep.energy = s.size() ? res.energy / double(s.size()) : 0.;
+    rep.number_of_particles = s.size();
+    rep.number_deleted = deleted;
+    rep.number_inserted = inserted;
+    rep.lbfgs_iterations = res.iterations;
+    rep.time = timer_.time();
+    if(o_.verbose)
+      std::cerr << "  lattice level " << level << " round " << r << ": " << s.size() << " particles (-" << deleted
+                << " +" << inserted << "), energy/particle " << rep.energy << ", " << res.iterations
+                << " L-BFGS its, " << rep.time << " s\n";
+    if(o_.visitor) o_.visitor(rep);
+  }
+
+  // Alg. 5 at one edge length, with its last round or not (then `finish()` runs it); returns
+  // the number of rounds
+  int optimize_level(System& s, int level, int max_rounds, bool last_round)
+  {
     int rounds = 1;
-    round(0, 1e-2, 13, 0, 0);
+    lattice_round(s, level, 0, 1e-2, 13, 0, 0);
     for(int r = 0; r < max_rounds && !time_up(); ++r) {
       const std::size_t deleted = delete_particles(s);
       const std::size_t inserted = insert_particles(s);
       if(deleted + inserted == 0) break;
-      round(r + 1, 1e-2, r + 1 < 5 ? 13 : 8, deleted, inserted);
+      lattice_round(s, level, r + 1, 1e-2, r + 1 < 5 ? 13 : 8, deleted, inserted);
       ++rounds;
     }
-    if(!time_up()) {
-      round(rounds, 1e-4, 100, 0, 0); // the last round, to convergence
+    last_round_number_ = rounds;
+    if(last_round && !time_up()) {
+      lattice_round(s, level, rounds, 1e-4, 100, 0, 0); // the last round, to convergence
       ++rounds;
     }
     return rounds;
@@ -291,6 +327,9 @@ private:
   double l_;
   Lattice_options o_;
   CGAL::Real_timer timer_;
+  std::unique_ptr<System> system_;
+  Lattice_particles_3<Point_3> out_; // the counters so far
+  int last_round_number_ = 0;
 };
 
 } // namespace internal

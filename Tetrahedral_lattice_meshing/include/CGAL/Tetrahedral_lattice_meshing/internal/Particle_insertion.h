@@ -135,7 +135,11 @@ std::size_t insert_particles(System& s, double max_energy)
   const double r = s.euclidean_radius();
   const double d_ins = s.lattice().insertion_distance;
   const Neighbor_grid grid(s.points, r);
-  std::vector<Insertion_candidate> candidates = empty_sites(s, d_ins, grid, r);
+  // a particle within d_ins in the imagined space is within d_ins / R of the pairs' Euclidean
+  // radius (both scale with the field's largest stretch): the sites' search needs no more
+  // (it was a fifth of the particle optimization's time)
+  std::vector<Insertion_candidate> candidates =
+      empty_sites(s, d_ins, grid, r * (std::min)(1., d_ins / s.neighbor_radius()));
   parallel_for_each_index(candidates.size(), [&](std::size_t k) {
     candidates[k].energy = s.energy_at(candidates[k].point, grid, r);
   });
