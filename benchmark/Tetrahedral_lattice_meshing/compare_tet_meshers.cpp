@@ -33,7 +33,8 @@ namespace {
 const char* usage =
     "usage: compare_tet_meshers INPUT [--vertices N] [--features-angle DEG]\n"
     "                           [--field identity|cross|rotation-y|fig4.8|fig4.9] [--methods m1,m2,...]\n"
-    "                           [--threads N] [--json FILE] [--out-dir DIR] [--seed N] [--levels K] [--verbose]\n"
+    "                           [--threads N] [--json FILE] [--out-dir DIR] [--seed N] [--levels K]\n"
+    "                           [--sliver-bound DEG] [--verbose]\n"
     "  INPUT  a closed triangle surface (OFF, OBJ, PLY, STL, ...), or cube, sphere, torus\n"
     "         (cube is [-1,1]^3, [0.1,1.1]^3 with fig4.8, [1,11]^3 with fig4.9; torus: radii 1 and 0.4 about y)\n"
     "  --vertices N        the vertex count of every method (default 10000): the lattice methods ask\n"
@@ -53,6 +54,8 @@ const char* usage =
     "  --out-dir DIR       write <model>_<method>.mesh and .vtu (with a per-cell alignment_error)\n"
     "  --seed N            seed of the particles and of make_mesh_3 (default 0)\n"
     "  --levels K          multiresolution levels of the particles, K in [0, 6] (default: the package's choice)\n"
+    "  --sliver-bound DEG  the smallest angle sought by the polishing of bcc and fcc (default 30;\n"
+    "                      0: none; higher lifts more boundary-layer cells for more alignment error)\n"
     "  --verbose           progress of the particle rounds\n";
 
 using vvm_benchmark::parse_number;
@@ -91,6 +94,9 @@ Options parse_command_line(int argc, char** argv)
     } else if(arg == "--levels") {
       o.levels = parse_number<int>(arg, value());
       if(o.levels < 0 || o.levels > 6) throw Input_error("--levels must be in [0, 6]");
+    } else if(arg == "--sliver-bound") {
+      o.sliver_bound = parse_number<double>(arg, value());
+      if(!(o.sliver_bound >= 0 && o.sliver_bound < 70.5)) throw Input_error("--sliver-bound must be in [0, 70.5)");
     } else if(arg == "--verbose") {
       o.verbose = true;
     } else if(arg == "--help" || arg == "-h") {

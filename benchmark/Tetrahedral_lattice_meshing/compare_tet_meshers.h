@@ -29,6 +29,7 @@ struct Options
   std::string out_dir;
   unsigned int seed = 0;
   int levels = -1;                  // multiresolution levels; < 0: the package's choice
+  double sliver_bound = 30;         // the lattice meshes' polishing bound (degrees; 0: none)
   bool verbose = false;
 };
 

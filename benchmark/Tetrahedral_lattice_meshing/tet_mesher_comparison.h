@@ -233,7 +233,8 @@ private:
     C3T3 c3t3 = run.c3t3;
     TLM::Lattice_mesh_report report = run.report;
     // what make_lattice_mesh_3 does after the connection: the same function
-    TLM::internal::optimize_lattice_mesh(c3t3, domain_, field_, stage, options_.threads, 0., report);
+    TLM::internal::optimize_lattice_mesh(c3t3, domain_, field_, stage, options_.sliver_bound, options_.threads, 0.,
+                                         report);
     r.time_s = run.time_s + report.gsm_time;
     measure(c3t3, TLM::Lattice::make(type), r);
     return r;
@@ -337,11 +338,12 @@ private:
 
   void print_table(const std::vector<Method_result>& results) const
   {
-    std::printf("\nmodel %s, field %s (%s), target %zu vertices, %s; make_mesh_3 at %.2f s, field %.2f s\n",
+    std::printf("\nmodel %s, field %s (%s), target %zu vertices, %s, lattice polishing bound %g; "
+                "make_mesh_3 at %.2f s, field %.2f s\n",
                 model_.c_str(), options_.field.c_str(), conformal_ ? "quality as is" : "quality in the metric",
                 options_.target_vertices, options_.threads > 0 ? (std::to_string(options_.threads) + " threads").c_str()
                                                                : "all threads",
-                initial_time_s_, field_time_s_);
+                options_.sliver_bound, initial_time_s_, field_time_s_);
     bool first = true;
     for(const Method_result& r : results) {
       print_line(r, first);
@@ -366,7 +368,7 @@ private:
          << ", \"hausdorff\": " << r.boundary_distance << ", \"hausdorff_ratio\": " << hausdorff_ratio(r)
          << ", \"time_s\": " << r.time_s << ", \"particle_time_s\": " << r.particle_time_s
          << ", \"field_time_s\": " << field_time_s_ << ", \"particles_requested\": " << r.particles_requested
-         << ", \"threads\": " << options_.threads << "}\n";
+         << ", \"threads\": " << options_.threads << ", \"sliver_bound\": " << options_.sliver_bound << "}\n";
     }
     if(!os) throw std::runtime_error("cannot write '" + options_.json_file + "'");
   }

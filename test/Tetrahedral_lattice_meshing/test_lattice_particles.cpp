@@ -595,6 +595,63 @@ void test_particle_kinds_on_sphere()
   VVM_CHECK_EQUAL(hanging, std::size_t(0));
 }
 
+// make_lattice_mesh_3's polishing bound (GSM_mesh_optimization::parameters::sliver_bound) on the
+// sphere, whose boundary layer has cells between 30 and 50 degrees: bound 0 leaves every vertex
+// where the particles' own triangulation has it (the flips move none, nothing is split);
+// bound 50 lifts cells under 40 that the default bound 30 leaves, without inverting any.
+void test_polishing_bound()
+{
+  namespace GSM = CGAL::GSM_mesh_optimization;
+  typedef CGAL::Mesh_triangulation_3<Implicit_domain, CGAL::Default, CGAL::Sequential_tag>::type Sphere_tr;
+  typedef CGAL::Mesh_complex_3_in_triangulation_3<Sphere_tr> Sphere_c3t3;
+  const Implicit_domain domain = Implicit_domain::create_implicit_mesh_domain(
+      std::function<double(const Point&)>(sphere_function), K::Sphere_3(CGAL::ORIGIN, 1.21),
+      CGAL::parameters::relative_error_bound = 1e-9);
+  auto mesh = [&](TLM::Lattice_mesh_optimization stage, double bound) {
+    return CGAL::make_lattice_mesh_3<Sphere_c3t3>(domain, Constant_field(),
+        TLM::parameters::number_of_particles(std::size_t(1500), TLM::parameters::mesh_optimization(stage,
+            GSM::parameters::sliver_bound(bound, CGAL::parameters::random_seed(4u)))));
+  };
+  auto vertices = [](const Sphere_c3t3& c3t3) {
+    std::vector<std::array<double, 3>> points;
+    for(auto v : c3t3.triangulation().finite_vertex_handles())
+      points.push_back({v->point().x(), v->point().y(), v->point().z()});
+    std::sort(points.begin(), points.end());
+    return points;
+  };
+  const Sphere_c3t3 delaunay = mesh(TLM::Lattice_mesh_optimization::NONE, 30);
+  const Sphere_c3t3 unpolished = mesh(TLM::Lattice_mesh_optimization::FLIPS, 0);
+  const Sphere_c3t3 by_default = mesh(TLM::Lattice_mesh_optimization::FLIPS, 30);
+  const Sphere_c3t3 lifted = mesh(TLM::Lattice_mesh_optimization::FLIPS, 50);
+  const GSM::Mesh_quality_statistics q0 = GSM::mesh_quality_statistics(unpolished),
+                                     q30 = GSM::mesh_quality_statistics(by_default),
+                                     q50 = GSM::mesh_quality_statistics(lifted);
+  std::cout << "sphere, bcc, 1500 sought, polishing bound 0 / 30 / 50: min dihedral " << q0.min_dihedral_angle
+            << " / " << q30.min_dihedral_angle << " / " << q50.min_dihedral_angle << ", tets under 40 "
+            << q0.n_min_dihedral_below[3] << " / " << q30.n_min_dihedral_below[3] << " / "
+            << q50.n_min_dihedral_below[3] << ", mean smallest angle " << q0.mean_min_dihedral_angle << " / "
+            << q30.mean_min_dihedral_angle << " / " << q50.mean_min_dihedral_angle << "\n";
+  VVM_CHECK(vertices(unpolished) == vertices(delaunay));
+  // the same domain object gives the same mesh after the others (the implicit domain's own random
+  // generator, which Mesh_3's sampling of the boundary draws from, is reset for it), and is left
+  // as it was: its next initial points are those of an untouched copy
+  VVM_CHECK(vertices(mesh(TLM::Lattice_mesh_optimization::NONE, 30)) == vertices(delaunay));
+  const Implicit_domain untouched = Implicit_domain::create_implicit_mesh_domain(
+      std::function<double(const Point&)>(sphere_function), K::Sphere_3(CGAL::ORIGIN, 1.21),
+      CGAL::parameters::relative_error_bound = 1e-9);
+  std::vector<std::pair<Point, Implicit_domain::Index>> after_runs, fresh;
+  domain.construct_initial_points_object()(std::back_inserter(after_runs), 4);
+  untouched.construct_initial_points_object()(std::back_inserter(fresh), 4);
+  VVM_CHECK(after_runs.size() == 4 && fresh.size() == 4);
+  bool same_points = after_runs.size() == fresh.size();
+  for(std::size_t i = 0; same_points && i < fresh.size(); ++i) same_points = after_runs[i].first == fresh[i].first;
+  VVM_CHECK(same_points);
+  VVM_CHECK(q30.n_min_dihedral_below[3] > 0);
+  CHECK_LESS(double(q50.n_min_dihedral_below[3]), double(q30.n_min_dihedral_below[3]));
+  VVM_CHECK_EQUAL(q50.number_of_inverted_cells, std::size_t(0));
+  VVM_CHECK(lifted.triangulation().tds().is_valid());
+}
+
 // ---------------------------------------------------------------------------------------------
 // 5. The same particles with 1 and 2 threads.
 
@@ -924,6 +981,18 @@ void test_bad_inputs()
             TLM::parameters::lattice(TLM::Lattice_type::CUBIC, TLM::parameters::edge_length(0.5)));
       },
       "cubic"));
+  // the polishing bound of the last stage, checked before the particles (and before the cross field)
+  namespace GSM = CGAL::GSM_mesh_optimization;
+  for(double bound : {-1., 70.5, std::nan("")}) {
+    VVM_CHECK(throws_invalid_argument(
+        [&]() {
+          CGAL::make_lattice_mesh_3<Cube_c3t3>(domain, identity,
+              GSM::parameters::sliver_bound(bound, TLM::parameters::edge_length(0.5)));
+        },
+        "sliver bound"));
+    VVM_CHECK(throws_invalid_argument(
+        [&]() { CGAL::make_lattice_mesh_3<Cube_c3t3>(domain, GSM::parameters::sliver_bound(bound)); }, "sliver bound"));
+  }
   std::cout << "bad inputs: " << vvm_test::passed() - passed_before << " of "
             << vvm_test::passed() - passed_before + vvm_test::failed() - failed_before
             << " refused with std::invalid_argument naming the problem\n";
@@ -944,6 +1013,7 @@ int main(int argc, char** argv)
       {"particle_kinds_on_sphere", test_particle_kinds_on_sphere},
       {"thread_independence", test_thread_independence},
       {"multiresolution_choice", test_multiresolution_choice},
+      {"polishing_bound", test_polishing_bound},
       {"lattice_mesh_on_cube", test_lattice_mesh_on_cube},
       {"lattice_mesh_in_stretched_field", test_lattice_mesh_in_stretched_field},
       {"bad_inputs", test_bad_inputs}};

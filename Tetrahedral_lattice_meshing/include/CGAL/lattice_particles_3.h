@@ -307,7 +307,11 @@ default_frame_field(const MeshDomain& domain,
  *     \cgalParamType{`int`} \cgalParamDefault{16 at the first level, 8 at the next ones}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{random_seed}
- *     \cgalParamDescription{the seed of the random initial particles}
+ *     \cgalParamDescription{the seed of the random initial particles: the same domain, field,
+ *       parameters and seed give the same particles, whatever ran before in the process (the
+ *       random generators `make_mesh_3()` draws from when it samples the boundary, CGAL's default
+ *       one and a `Labeled_mesh_domain_3`'s own, are set for the sampling and given back their
+ *       state afterwards)}
  *     \cgalParamType{`unsigned int`} \cgalParamDefault{0}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{Tetrahedral_lattice_meshing::parameters::number_of_threads}

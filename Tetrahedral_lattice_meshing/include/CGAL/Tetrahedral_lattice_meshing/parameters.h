@@ -45,7 +45,9 @@ CGAL_VVM_ADD_NAMED_PARAMETER(number_of_particles)
 CGAL_VVM_ADD_NAMED_PARAMETER(kernel_width)
 /// `double`: the neighbour radius \f$ R \f$ in units of \f$ l^* \f$ (default 1.3; cubic 1.5)
 CGAL_VVM_ADD_NAMED_PARAMETER(neighbor_radius)
-/// `int`: \f$ k \f$, the particles are first optimized at \f$ 2^k l^* \f$ (default: 1 from 4,000 particles, else 0; cubic: 2 from 3,200 particles, 1 from 400)
+/// `int`: \f$ k \f$, the particles are first optimized at \f$ 2^k l^* \f$ (default: BCC and FCC from
+/// \f$ k_0 + 1 \f$ and \f$ k_0 = \lceil \log_8 (n / 2000) \rceil \f$ levels, the lower energy kept, see
+/// `lattice_particles_3()`; cubic: 2 from 3,200 particles, 1 from 400)
 CGAL_VVM_ADD_NAMED_PARAMETER(multiresolution_levels)
 /// `int`: the number of threads (default 0: TBB's choice); the result does not depend on it
 CGAL_VVM_ADD_NAMED_PARAMETER(number_of_threads)

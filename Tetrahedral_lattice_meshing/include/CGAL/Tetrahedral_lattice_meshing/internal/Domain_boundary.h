@@ -9,6 +9,7 @@
 #ifndef CGAL_TETRAHEDRAL_LATTICE_MESHING_INTERNAL_DOMAIN_BOUNDARY_H
 #define CGAL_TETRAHEDRAL_LATTICE_MESHING_INTERNAL_DOMAIN_BOUNDARY_H
 
+#include <CGAL/Tetrahedral_lattice_meshing/internal/Reproducible_sampling.h>
 #include <CGAL/make_mesh_3.h>
 
 #include <CGAL/AABB_segment_primitive.h>
@@ -19,7 +20,6 @@
 #include <CGAL/Mesh_complex_3_in_triangulation_3.h>
 #include <CGAL/Mesh_criteria_3.h>
 #include <CGAL/Mesh_triangulation_3.h>
-#include <CGAL/Random.h>
 
 #include <Eigen/Core>
 
@@ -98,13 +98,14 @@ public:
     if(!(finest_spacing > 0) || finest_spacing > spacing) finest_spacing = spacing;
     namespace P = CGAL::parameters;
     typedef CGAL::Mesh_criteria_3<typename C3T3::Triangulation> Criteria;
-    const CGAL::Random saved = CGAL::get_default_random();
-    CGAL::get_default_random() = CGAL::Random(0); // the boundary must not depend on the process's history
     Criteria criteria(P::edge_size = spacing, P::facet_angle = 25, P::facet_size = spacing,
                       P::facet_distance = 0.02 * finest_spacing, P::cell_radius_edge_ratio = 3,
                       P::cell_size = 2 * spacing);
-    C3T3 c3t3 = CGAL::make_mesh_3<C3T3>(domain, criteria, P::no_perturb(), P::no_exude());
-    CGAL::get_default_random() = saved;
+    C3T3 c3t3;
+    {
+      const Reproducible_sampling reproducible(domain); // the boundary must not depend on the process's history
+      c3t3 = CGAL::make_mesh_3<C3T3>(domain, criteria, P::no_perturb(), P::no_exude());
+    }
     read(c3t3);
   }
 

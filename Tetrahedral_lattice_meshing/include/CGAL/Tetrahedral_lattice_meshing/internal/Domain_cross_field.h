@@ -11,7 +11,7 @@
 #include <CGAL/Frame_fields/generate_cross_field_3.h>
 
 #include <CGAL/Mesh_criteria_3.h>
-#include <CGAL/Random.h>
+#include <CGAL/Tetrahedral_lattice_meshing/internal/Reproducible_sampling.h>
 #include <CGAL/make_mesh_3.h>
 
 #include <stdexcept>
@@ -34,12 +34,13 @@ domain_cross_field(const MeshDomain& domain, double size)
   typedef CGAL::Mesh_criteria_3<typename C3T3::Triangulation> Criteria;
   if(!(size > 0) || !std::isfinite(size))
     throw std::invalid_argument("the cross field's mesh size must be positive and finite");
-  const CGAL::Random saved = CGAL::get_default_random();
-  CGAL::get_default_random() = CGAL::Random(0);
   Criteria criteria(P::edge_size = size, P::facet_angle = 25, P::facet_size = size,
                     P::facet_distance = 0.05 * size, P::cell_radius_edge_ratio = 3, P::cell_size = size);
-  const C3T3 c3t3 = CGAL::make_mesh_3<C3T3>(domain, criteria, P::no_perturb(), P::no_exude());
-  CGAL::get_default_random() = saved;
+  C3T3 c3t3;
+  {
+    const Reproducible_sampling reproducible(domain);
+    c3t3 = CGAL::make_mesh_3<C3T3>(domain, criteria, P::no_perturb(), P::no_exude());
+  }
   if(c3t3.number_of_cells_in_complex() == 0)
     throw std::invalid_argument("the domain is empty: no cell to carry a cross field");
   return Frame_fields::generate_cross_field_3(c3t3).field;
