@@ -527,11 +527,17 @@ void test_particle_kinds_on_cube()
 
 double sphere_function(const Point& p) { return p.x() * p.x() + p.y() * p.y() + p.z() * p.z() - 1.; }
 
-void test_particle_kinds_on_sphere()
+// the unit sphere as an implicit domain (each call a new one, with its own random generator)
+Implicit_domain sphere_domain()
 {
-  const Implicit_domain domain = Implicit_domain::create_implicit_mesh_domain(
+  return Implicit_domain::create_implicit_mesh_domain(
       std::function<double(const Point&)>(sphere_function), K::Sphere_3(CGAL::ORIGIN, 1.21),
       CGAL::parameters::relative_error_bound = 1e-9);
+}
+
+void test_particle_kinds_on_sphere()
+{
+  const Implicit_domain domain = sphere_domain();
   const std::size_t wanted = 1500;
   const Particles p = CGAL::lattice_particles_3(domain, Constant_field(),
       TLM::parameters::number_of_particles(wanted, CGAL::parameters::random_seed(4u)));
@@ -604,9 +610,7 @@ void test_polishing_bound()
   namespace GSM = CGAL::GSM_mesh_optimization;
   typedef CGAL::Mesh_triangulation_3<Implicit_domain, CGAL::Default, CGAL::Sequential_tag>::type Sphere_tr;
   typedef CGAL::Mesh_complex_3_in_triangulation_3<Sphere_tr> Sphere_c3t3;
-  const Implicit_domain domain = Implicit_domain::create_implicit_mesh_domain(
-      std::function<double(const Point&)>(sphere_function), K::Sphere_3(CGAL::ORIGIN, 1.21),
-      CGAL::parameters::relative_error_bound = 1e-9);
+  const Implicit_domain domain = sphere_domain();
   auto mesh = [&](TLM::Lattice_mesh_optimization stage, double bound) {
     return CGAL::make_lattice_mesh_3<Sphere_c3t3>(domain, Constant_field(),
         TLM::parameters::number_of_particles(std::size_t(1500), TLM::parameters::mesh_optimization(stage,
@@ -636,16 +640,13 @@ void test_polishing_bound()
   // generator, which Mesh_3's sampling of the boundary draws from, is reset for it), and is left
   // as it was: its next initial points are those of an untouched copy
   VVM_CHECK(vertices(mesh(TLM::Lattice_mesh_optimization::NONE, 30)) == vertices(delaunay));
-  const Implicit_domain untouched = Implicit_domain::create_implicit_mesh_domain(
-      std::function<double(const Point&)>(sphere_function), K::Sphere_3(CGAL::ORIGIN, 1.21),
-      CGAL::parameters::relative_error_bound = 1e-9);
+  const Implicit_domain untouched = sphere_domain();
   std::vector<std::pair<Point, Implicit_domain::Index>> after_runs, fresh;
   domain.construct_initial_points_object()(std::back_inserter(after_runs), 4);
   untouched.construct_initial_points_object()(std::back_inserter(fresh), 4);
   VVM_CHECK(after_runs.size() == 4 && fresh.size() == 4);
-  bool same_points = after_runs.size() == fresh.size();
-  for(std::size_t i = 0; same_points && i < fresh.size(); ++i) same_points = after_runs[i].first == fresh[i].first;
-  VVM_CHECK(same_points);
+  VVM_CHECK(std::equal(after_runs.begin(), after_runs.end(), fresh.begin(), fresh.end(),
+                       [](const auto& a, const auto& b) { return a.first == b.first; }));
   VVM_CHECK(q30.n_min_dihedral_below[3] > 0);
   CHECK_LESS(double(q50.n_min_dihedral_below[3]), double(q30.n_min_dihedral_below[3]));
   VVM_CHECK_EQUAL(q50.number_of_inverted_cells, std::size_t(0));
