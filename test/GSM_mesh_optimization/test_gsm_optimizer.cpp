@@ -1041,6 +1041,40 @@ void test_threads_fields_and_boundary()
   VVM_CHECK(GSM::mesh_quality_statistics(no_split).min_dihedral_angle >
             GSM::mesh_quality_statistics(no_polish).min_dihedral_angle);
 
+  // shortest_polishing_moves: with flips only in the rounds and no splits, only the polishing
+  // moves vertices, by less in all with the shortest moves (each vertex's distance to the
+  // nearest initial one: the moves are shorter than half an edge), the worst cell still lifted
+  auto displacement = [&initial](const Implicit_c3t3& c3t3) {
+    std::vector<Eigen::Vector3d> before;
+    for(const auto& vp : positions(initial)) before.push_back(vp.second);
+    double sum = 0;
+    for(const auto& vp : positions(c3t3)) {
+      double d = std::numeric_limits<double>::infinity();
+      for(const Eigen::Vector3d& b : before) d = (std::min)(d, (vp.second - b).norm());
+      sum += d;
+    }
+    return sum;
+  };
+  Implicit_c3t3 flips_only = initial, farthest = initial, shortest = initial;
+  CGAL::gsm_optimize_mesh_3(flips_only, domain, GSM::parameters::smooth_vertices(false, GSM::parameters::sliver_bound(0)));
+  auto polish_only = GSM::parameters::smooth_vertices(false, GSM::parameters::split_edges(false,
+      GSM::parameters::sliver_bound(40)));
+  CGAL::gsm_optimize_mesh_3(farthest, domain, polish_only);
+  CGAL::gsm_optimize_mesh_3(shortest, domain, GSM::parameters::shortest_polishing_moves(true, polish_only));
+  VVM_CHECK(complex_is_valid(shortest));
+  const auto q_flips = GSM::mesh_quality_statistics(flips_only), q_far = GSM::mesh_quality_statistics(farthest),
+             q_short = GSM::mesh_quality_statistics(shortest);
+  std::printf("  polishing moves (bound 40, flips only, no splits): displacement %.4f (max-min) against %.4f "
+              "(shortest), min %.2f / %.2f, tets under 40 %zu / %zu (before the polishing: min %.2f, %zu)\n",
+              displacement(farthest), displacement(shortest), q_far.min_dihedral_angle, q_short.min_dihedral_angle,
+              q_far.n_min_dihedral_below[3], q_short.n_min_dihedral_below[3], q_flips.min_dihedral_angle,
+              q_flips.n_min_dihedral_below[3]);
+  VVM_CHECK_EQUAL(displacement(flips_only), 0.);
+  VVM_CHECK(displacement(shortest) > 0);
+  VVM_CHECK(displacement(shortest) < displacement(farthest));
+  VVM_CHECK(q_short.min_dihedral_angle > q_flips.min_dihedral_angle);
+  VVM_CHECK(q_short.n_min_dihedral_below[3] < q_flips.n_min_dihedral_below[3]);
+
   // h and 4h (a power of two: the fitted scale is then exactly the same)
   auto h = [](const Eigen::Vector3d& x) { return GSM::dissertation::adaptive_sphere_sizing(x); };
   Implicit_c3t3 small = initial, large = initial;

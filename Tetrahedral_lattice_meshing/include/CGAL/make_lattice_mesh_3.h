@@ -88,9 +88,10 @@ void optimize_lattice_mesh(C3T3& c3t3, const MeshDomain& domain, const FrameFiel
   for(auto v = c3t3.triangulation().finite_vertices_begin(); v != c3t3.triangulation().finite_vertices_end(); ++v)
     points.push_back(Point_3(v->point().x(), v->point().y(), v->point().z()));
   r.metric_is_anisotropic = !is_conformal(field, points);
-  auto gsm_np = GSM::parameters::sliver_bound(sliver_bound, GSM::parameters::smooth_vertices(
-      stage == Lattice_mesh_optimization::GSM,
-      GSM::parameters::number_of_threads(threads, CGAL::parameters::maximum_running_time(time_limit))));
+  // the polishing's moves as short as will do: each takes vertices off the lattice
+  auto gsm_np = GSM::parameters::shortest_polishing_moves(true, GSM::parameters::sliver_bound(sliver_bound,
+      GSM::parameters::smooth_vertices(stage == Lattice_mesh_optimization::GSM,
+      GSM::parameters::number_of_threads(threads, CGAL::parameters::maximum_running_time(time_limit)))));
   if(r.metric_is_anisotropic) {
     auto metric = [&field](const Eigen::Vector3d& x) {
       const Eigen::Matrix3d B = field.B(Point_3(x[0], x[1], x[2]));

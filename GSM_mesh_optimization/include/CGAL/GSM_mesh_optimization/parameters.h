@@ -31,6 +31,7 @@ enum split_edges_t { split_edges };
 enum smooth_vertices_t { smooth_vertices };
 enum sliver_bound_t { sliver_bound };
 enum uniform_sizing_t { uniform_sizing };
+enum shortest_polishing_moves_t { shortest_polishing_moves };
 
 } // namespace internal_np
 
@@ -56,6 +57,8 @@ CGAL_VVM_ADD_NAMED_PARAMETER(split_edges)
 CGAL_VVM_ADD_NAMED_PARAMETER(smooth_vertices)
 /// `bool`: one target edge length for the whole mesh instead of the input mesh's local size (default `false`)
 CGAL_VVM_ADD_NAMED_PARAMETER(uniform_sizing)
+/// `bool`: the polishing lifts a cell by the shortest vertex move that takes its star to the bound (default `false`)
+CGAL_VVM_ADD_NAMED_PARAMETER(shortest_polishing_moves)
 
 } // namespace parameters
 } // namespace GSM_mesh_optimization

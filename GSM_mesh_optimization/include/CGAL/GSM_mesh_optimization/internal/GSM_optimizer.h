@@ -64,6 +64,7 @@ struct GSM_options
   bool do_smooth = true;
   double sliver_bound = 30; // degrees; 0: no polishing
   bool do_split = true;
+  bool shortest_moves = false; // the polishing's max-min moves: the shortest step to the bound
   bool freeze_boundary = false;
   bool verbose = false;
   Shape_matching_energy energy = Shape_matching_energy::GSM;
@@ -195,7 +196,8 @@ private:
   {
     Edge_split<C3T3> splits(c3t3_, energy_, sum, count, Angle_penalty::for_bound(options_.sliver_bound));
     Sliver_polisher<C3T3, MeshDomain> polisher(c3t3_, energy_, smoother_, flips, splits, options_.sliver_bound,
-                                               options_.do_split, options_.freeze_boundary);
+                                               options_.do_split, options_.freeze_boundary,
+                                               options_.shortest_moves);
     Worst_cells_progress progress(energy_, options_.sliver_bound, polishing_angle_gain, polishing_count_share);
     for(int pass = 0; pass < max_polishing_passes && !time_is_up(timer); ++pass) {
       const double start = timer.time();
