@@ -209,7 +209,7 @@ C3T3 make_lattice_mesh(const MeshDomain& domain, const FrameField& field, const 
  * `gsm_optimize_mesh_3()` in the field's metric \f$ M = B^T B \f$ (isotropic when the frames
  * are rotations): by default with its energy-guided flips only, which make the connectivity
  * follow the field while the vertices stay on the lattice, and its polishing of the cells
- * under 30 degrees (dissertation 4.3.2, with CGAL's Delaunay triangulation and GSM in place of
+ * under 30 degrees by the shortest vertex moves that lift them (dissertation 4.3.2, with CGAL's Delaunay triangulation and GSM in place of
  * GEOGRAM's restricted Voronoi diagram and TetGen).
  *
  * \tparam C3T3 a `Mesh_complex_3_in_triangulation_3` of a `Mesh_triangulation_3` of `MeshDomain`
@@ -229,11 +229,12 @@ C3T3 make_lattice_mesh(const MeshDomain& domain, const FrameField& field, const 
  *     \cgalParamDescription{the smallest dihedral angle, in degrees (in the field's metric), that the
  *       polishing of the last stage seeks (see `gsm_optimize_mesh_3()`); 0 skips the polishing.
  *       A higher bound lifts more of the cells of the boundary layer, where the lattice meets a
- *       curved surface, by moving their vertices off the lattice: more of their angles for more
- *       alignment error and time (BCC, bound 30 -> 55: on the elephant at 10,000 particles the
- *       mean smallest angle 55.00 -> 55.79 degrees, tets under 40 degrees 2,533 -> 707, mean
- *       alignment error 5.65 -> 6.90 degrees, time 17 -> 72 s; on fandisk at 18,000, 57.09 -> 57.29,
- *       1,855 -> 441, 3.54 -> 4.42)}
+ *       curved surface, by moving their vertices off the lattice (each by the shortest step that
+ *       will do: `GSM_mesh_optimization::parameters::shortest_polishing_moves`): more of their
+ *       angles for more alignment error and time (BCC, bound 30 -> 55: on the elephant at 10,000
+ *       particles the mean smallest angle 55.05 -> 55.82 degrees, tets under 40 degrees
+ *       2,423 -> 734, mean alignment error 5.58 -> 6.87 degrees, time 11 -> 50 s; on fandisk at
+ *       18,000, 57.15 -> 57.30, 1,688 -> 463, 3.46 -> 4.40)}
  *     \cgalParamType{`double`, in [0, 70.5)}
  *     \cgalParamDefault{30}
  *   \cgalParamNEnd
