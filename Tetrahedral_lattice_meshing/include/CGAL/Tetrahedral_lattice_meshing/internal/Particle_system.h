@@ -17,8 +17,9 @@
 // frames stretch: rotation fields (cross fields) keep each round's frames, as
 // their frames are defined up to the lattice's symmetries and their
 // representation jumps (with the derivative, fandisk's cross-field BCC mesh had
-// an alignment error of 7.25 degrees against 4.61). L-BFGS moves each particle in the imagined space of its own
-// frame (frozen for the round too), where the energy is isotropic: in
+// an alignment error of 7.25 degrees against 4.61). L-BFGS moves each particle
+// in the imagined space of its own frame (frozen for the round too), where the
+// energy is isotropic: in
 // Euclidean coordinates a stretched or graded field would make the problem
 // ill-conditioned (curvatures ~ B^T B), and the particles of the stretched
 // axes or the coarse parts would hardly move in a round's few iterations.
@@ -199,7 +200,8 @@ public:
   }
 
   const std::vector<Pair>& pairs() const { return pairs_; }
-  /// false if the field is constant at the particles (the pairs' frames then stay as built)
+  /// false if the frames do not stretch (rotations of one scale) or are constant at the
+  /// particles: the pairs' frames then stay as built for the round
   bool frames_vary() const { return !derivatives_.empty(); }
 
   /*
@@ -483,7 +485,7 @@ private:
   const FrameField& field_;
   const Boundary* boundary_;
   double l_, sigma_, radius_;
-  std::vector<Frame_derivative> derivatives_; // empty if the field is constant at the particles
+  std::vector<Frame_derivative> derivatives_; // empty unless the frames stretch and vary
   std::vector<Eigen::Vector3d> built_at_;     // p / l* when the pairs were built
   std::vector<Pair> pairs_;
   std::vector<std::size_t> start_;
