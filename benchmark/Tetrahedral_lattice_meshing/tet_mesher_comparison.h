@@ -233,7 +233,7 @@ private:
     C3T3 c3t3 = run.c3t3;
     TLM::Lattice_mesh_report report = run.report;
     // what make_lattice_mesh_3 does after the connection: the same function
-    TLM::internal::optimize_lattice_mesh(c3t3, domain_, field_, stage, options_.sliver_bound, options_.threads, 0.,
+    TLM::internal::optimize_lattice_mesh(c3t3, domain_, field_, TLM::Lattice::make(type), stage, options_.sliver_bound, options_.threads, 0.,
                                          report);
     r.time_s = run.time_s + report.gsm_time;
     measure(c3t3, TLM::Lattice::make(type), r);

@@ -1075,6 +1075,41 @@ void test_threads_fields_and_boundary()
   VVM_CHECK(q_short.min_dihedral_angle > q_flips.min_dihedral_angle);
   VVM_CHECK(q_short.n_min_dihedral_below[3] < q_flips.n_min_dihedral_below[3]);
 
+  // mean_angle_moves after the same polishing: a higher mean smallest angle, no cell under 40
+  // that was not (each move keeps its star's count under the bound + 10 and its worst cell
+  // over the bound or where it was); a cost that no move can pay leaves the polished mesh as
+  // it is; a negative threshold is refused
+  Implicit_c3t3 raised = initial, unpaid = initial;
+  CGAL::gsm_optimize_mesh_3(raised, domain, GSM::parameters::mean_angle_moves(60, polish_only));
+  typedef Implicit_c3t3::Triangulation::Vertex_handle Implicit_vertex;
+  CGAL::gsm_optimize_mesh_3(unpaid, domain, GSM::parameters::vertex_move_cost(
+      [&unpaid](const Implicit_vertex& v, const Eigen::Vector3d& x) {
+        return 1e12 * (x - GSM::internal::to_eigen(unpaid.triangulation().point(v))).norm();
+      }, GSM::parameters::mean_angle_moves(60, polish_only)));
+  VVM_CHECK(complex_is_valid(raised));
+  const auto q_raised = GSM::mesh_quality_statistics(raised);
+  std::printf("  mean-angle moves (under 60) after the polishing: mean smallest angle %.3f against %.3f, "
+              "min %.2f / %.2f, tets under 40 %zu / %zu\n", q_raised.mean_min_dihedral_angle,
+              q_far.mean_min_dihedral_angle, q_raised.min_dihedral_angle, q_far.min_dihedral_angle,
+              q_raised.n_min_dihedral_below[3], q_far.n_min_dihedral_below[3]);
+  VVM_CHECK(q_raised.mean_min_dihedral_angle > q_far.mean_min_dihedral_angle + 0.1);
+  VVM_CHECK(q_raised.min_dihedral_angle >= (std::min)(q_far.min_dihedral_angle, 40.) - 1e-9);
+  VVM_CHECK(q_raised.n_min_dihedral_below[3] <= q_far.n_min_dihedral_below[3]);
+  auto sorted_points = [](const Implicit_c3t3& c3t3) {
+    std::vector<std::array<double, 3>> points;
+    for(const auto& vp : positions(c3t3)) points.push_back({vp.second[0], vp.second[1], vp.second[2]});
+    std::sort(points.begin(), points.end());
+    return points;
+  };
+  VVM_CHECK(sorted_points(unpaid) == sorted_points(farthest));
+  VVM_CHECK(sorted_points(raised) != sorted_points(farthest));
+  bool refused = false;
+  try {
+    Implicit_c3t3 copy = initial;
+    CGAL::gsm_optimize_mesh_3(copy, domain, GSM::parameters::mean_angle_moves(-1));
+  } catch(const std::invalid_argument& e) { refused = std::string(e.what()).find("mean-angle") != std::string::npos; }
+  VVM_CHECK(refused);
+
   // h and 4h (a power of two: the fitted scale is then exactly the same)
   auto h = [](const Eigen::Vector3d& x) { return GSM::dissertation::adaptive_sphere_sizing(x); };
   Implicit_c3t3 small = initial, large = initial;

@@ -17,6 +17,7 @@
 #include <CGAL/Frame_fields/Constant_frame_field_3.h>
 #include <CGAL/GSM_mesh_optimization/mesh_quality_statistics.h>
 #include <CGAL/Tetrahedral_lattice_meshing/Lattice.h>
+#include <CGAL/Tetrahedral_lattice_meshing/alignment_error.h>
 #include <CGAL/Tetrahedral_lattice_meshing/gaussian_hole_kernel.h>
 #include <CGAL/Tetrahedral_lattice_meshing/internal/Particle_deletion.h>
 #include <CGAL/Tetrahedral_lattice_meshing/internal/Particle_insertion.h>
@@ -683,10 +684,11 @@ void test_polishing_bound()
   typedef CGAL::Mesh_triangulation_3<Implicit_domain, CGAL::Default, CGAL::Sequential_tag>::type Sphere_tr;
   typedef CGAL::Mesh_complex_3_in_triangulation_3<Sphere_tr> Sphere_c3t3;
   const Implicit_domain domain = sphere_domain();
-  auto mesh = [&](TLM::Lattice_mesh_optimization stage, double bound) {
+  auto mesh = [&](TLM::Lattice_mesh_optimization stage, double bound, double mean_angle_threshold = 60) {
     return CGAL::make_lattice_mesh_3<Sphere_c3t3>(domain, Constant_field(),
         TLM::parameters::number_of_particles(std::size_t(1500), TLM::parameters::mesh_optimization(stage,
-            GSM::parameters::sliver_bound(bound, CGAL::parameters::random_seed(4u)))));
+            GSM::parameters::sliver_bound(bound, GSM::parameters::mean_angle_moves(mean_angle_threshold,
+                CGAL::parameters::random_seed(4u))))));
   };
   auto vertices = [](const Sphere_c3t3& c3t3) {
     std::vector<std::array<double, 3>> points;
@@ -723,6 +725,21 @@ void test_polishing_bound()
   CHECK_LESS(double(q50.n_min_dihedral_below[3]), double(q30.n_min_dihedral_below[3]));
   VVM_CHECK_EQUAL(q50.number_of_inverted_cells, std::size_t(0));
   VVM_CHECK(lifted.triangulation().tds().is_valid());
+
+  // the mean-angle moves (default 60 degrees) against none: the boundary layer's angles rise
+  // and its edges turn no further off the lattice on the whole (each move pays for the
+  // alignment error it adds)
+  const Sphere_c3t3 unmoved = mesh(TLM::Lattice_mesh_optimization::FLIPS, 30, 0);
+  const GSM::Mesh_quality_statistics q_unmoved = GSM::mesh_quality_statistics(unmoved);
+  const TLM::Lattice bcc = TLM::Lattice::make(TLM::Lattice_type::BCC);
+  const double eps_moved = TLM::alignment_statistics(by_default, Constant_field(), bcc).mean,
+               eps_unmoved = TLM::alignment_statistics(unmoved, Constant_field(), bcc).mean;
+  std::cout << "sphere, bcc, mean-angle moves under 60 / none: mean smallest angle " << q30.mean_min_dihedral_angle
+            << " / " << q_unmoved.mean_min_dihedral_angle << ", min " << q30.min_dihedral_angle << " / "
+            << q_unmoved.min_dihedral_angle << ", alignment error " << eps_moved << " / " << eps_unmoved << "\n";
+  VVM_CHECK(q30.mean_min_dihedral_angle > q_unmoved.mean_min_dihedral_angle + 0.2);
+  VVM_CHECK(q30.min_dihedral_angle >= (std::min)(q_unmoved.min_dihedral_angle, 30.) - 1e-9);
+  CHECK_LESS(eps_moved, eps_unmoved + 0.05);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -1066,6 +1083,16 @@ void test_bad_inputs()
     VVM_CHECK(throws_invalid_argument(
         [&]() { CGAL::make_lattice_mesh_3<Cube_c3t3>(domain, GSM::parameters::sliver_bound(bound)); }, "sliver bound"));
   }
+  // and so is the threshold of its mean-angle moves
+  VVM_CHECK(throws_invalid_argument(
+      [&]() {
+        CGAL::make_lattice_mesh_3<Cube_c3t3>(domain, identity,
+            GSM::parameters::mean_angle_moves(-1., TLM::parameters::edge_length(0.5)));
+      },
+      "mean-angle threshold"));
+  VVM_CHECK(throws_invalid_argument(
+      [&]() { CGAL::make_lattice_mesh_3<Cube_c3t3>(domain, GSM::parameters::mean_angle_moves(-1.)); },
+      "mean-angle threshold"));
   std::cout << "bad inputs: " << vvm_test::passed() - passed_before << " of "
             << vvm_test::passed() - passed_before + vvm_test::failed() - failed_before
             << " refused with std::invalid_argument naming the problem\n";

@@ -130,6 +130,7 @@ gsm_optimize(C3T3& c3t3, const MeshDomain* domain, bool boundary_fixed, const Na
   options.shortest_moves = choose_parameter(get_parameter(np, GSM::internal_np::shortest_polishing_moves), false);
   options.do_smooth = choose_parameter(get_parameter(np, GSM::internal_np::smooth_vertices), true);
   options.sliver_bound = choose_parameter(get_parameter(np, GSM::internal_np::sliver_bound), 30.);
+  options.mean_angle_moves = choose_parameter(get_parameter(np, GSM::internal_np::mean_angle_moves), 0.);
   options.verbose = choose_parameter(get_parameter(np, CGAL::internal_np::verbose), false);
   options.convergence =
       choose_parameter(get_parameter(np, GSM::internal_np::convergence_threshold), 1e-4);
@@ -139,9 +140,9 @@ gsm_optimize(C3T3& c3t3, const MeshDomain* domain, bool boundary_fixed, const Na
                                     GSM::Shape_matching_energy::GSM);
   const int threads = choose_parameter(get_parameter(np, GSM::internal_np::number_of_threads), 0);
   if(options.max_rounds < 0 || options.time_limit < 0 || !(options.convergence >= 0) || threads < 0 ||
-     !(options.sliver_bound >= 0 && options.sliver_bound < 70.5))
-    throw std::invalid_argument("GSM: negative iteration count, time limit, convergence threshold "
-                                "or thread count, or a sliver bound outside [0, 70.5) degrees");
+     !(options.sliver_bound >= 0 && options.sliver_bound < 70.5) || !(options.mean_angle_moves >= 0))
+    throw std::invalid_argument("GSM: negative iteration count, time limit, convergence threshold, "
+                                "thread count or mean-angle threshold, or a sliver bound outside [0, 70.5) degrees");
 
   auto visitor = get_parameter(np, CGAL::internal_np::visitor);
   if constexpr(!std::is_same<decltype(visitor), CGAL::internal_np::Param_not_found>::value)
@@ -179,6 +180,11 @@ gsm_optimize(C3T3& c3t3, const MeshDomain* domain, bool boundary_fixed, const Na
     thread_limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
                                                          std::size_t(threads));
   GSM::internal::GSM_optimizer<C3T3, MeshDomain> optimizer(c3t3, domain, metric, options, vertex_sizes);
+  auto cost = get_parameter(np, GSM::internal_np::vertex_move_cost);
+  if constexpr(!std::is_same<decltype(cost), CGAL::internal_np::Param_not_found>::value)
+    optimizer.set_move_cost([cost](const typename C3T3::Triangulation::Vertex_handle& v, const Eigen::Vector3d& x) {
+      return double(cost(v, x));
+    });
   return optimizer();
 }
 
@@ -304,6 +310,26 @@ gsm_optimize(C3T3& c3t3, const MeshDomain* domain, bool boundary_fixed, const Na
  *       leaves more cells just under the bound (elephant at 10,000: 109 under 30 against 65)}
  *     \cgalParamType{bool}
  *     \cgalParamDefault{false}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{GSM_mesh_optimization::parameters::mean_angle_moves}
+ *     \cgalParamDescription{if positive, after the polishing, passes of moves of the vertices of the
+ *       cells whose smallest dihedral angle is under this many degrees: each goes up the gradient
+ *       of the sum of its star's smallest angles (less its `vertex_move_cost`) when that raises the
+ *       sum without taking the star's worst cell under `sliver_bound` or putting more of its cells
+ *       under `sliver_bound` + 10 degrees; the passes stop when one moves nothing (at most 10).
+ *       They raise the mean smallest angle where the GSM energy's regular template does not fit,
+ *       such as the boundary layer of a lattice mesh (`make_lattice_mesh_3()` sets 60). Not run
+ *       when `sliver_bound` is 0}
+ *     \cgalParamType{double}
+ *     \cgalParamDefault{0}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{GSM_mesh_optimization::parameters::vertex_move_cost}
+ *     \cgalParamDescription{what a vertex costs at a position, in degrees of its star's smallest
+ *       angles, for the moves of `mean_angle_moves` only (`make_lattice_mesh_3()`: the alignment
+ *       error of its edges, so that vertices stay on the lattice unless moving pays). Called
+ *       sequentially, while only the vertex asked about moves}
+ *     \cgalParamType{a callable `double(C3T3::Triangulation::Vertex_handle, const Eigen::Vector3d&)`}
+ *     \cgalParamDefault{no cost}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{GSM_mesh_optimization::parameters::sizing_field}
  *     \cgalParamDescription{the relative target edge length `h(p)` (adaptive meshing): each vertex

@@ -32,6 +32,8 @@ enum smooth_vertices_t { smooth_vertices };
 enum sliver_bound_t { sliver_bound };
 enum uniform_sizing_t { uniform_sizing };
 enum shortest_polishing_moves_t { shortest_polishing_moves };
+enum mean_angle_moves_t { mean_angle_moves };
+enum vertex_move_cost_t { vertex_move_cost };
 
 } // namespace internal_np
 
@@ -59,6 +61,12 @@ CGAL_VVM_ADD_NAMED_PARAMETER(smooth_vertices)
 CGAL_VVM_ADD_NAMED_PARAMETER(uniform_sizing)
 /// `bool`: the polishing lifts a cell by the shortest vertex move that takes its star to the bound (default `false`)
 CGAL_VVM_ADD_NAMED_PARAMETER(shortest_polishing_moves)
+/// `double`: after the polishing, vertices with a cell under this many degrees in their star move to
+/// raise the sum of their star's smallest angles (default 0: none)
+CGAL_VVM_ADD_NAMED_PARAMETER(mean_angle_moves)
+/// a callable `double(Vertex_handle, const Eigen::Vector3d&)`: what a vertex at a position costs, in
+/// degrees of its star's smallest angles, for `mean_angle_moves` (default: nothing)
+CGAL_VVM_ADD_NAMED_PARAMETER(vertex_move_cost)
 
 } // namespace parameters
 } // namespace GSM_mesh_optimization

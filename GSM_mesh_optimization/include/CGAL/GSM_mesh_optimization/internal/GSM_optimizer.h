@@ -65,6 +65,7 @@ struct GSM_options
   double sliver_bound = 30; // degrees; 0: no polishing
   bool do_split = true;
   bool shortest_moves = false; // the polishing's max-min moves: the shortest step to the bound
+  double mean_angle_moves = 0;  // degrees: after the polishing, the stars with a cell under it raise their sum
   bool freeze_boundary = false;
   bool verbose = false;
   Shape_matching_energy energy = Shape_matching_energy::GSM;
@@ -87,6 +88,12 @@ public:
     : c3t3_(c3t3), options_(options), energy_(c3t3, metric, options.energy, std::move(sizing)),
       smoother_(c3t3, domain, energy_, options.freeze_boundary)
   {}
+
+  /// what a vertex at a position costs the mean-angle moves, in degrees
+  void set_move_cost(std::function<double(const Vertex_handle&, const Eigen::Vector3d&)> cost)
+  {
+    smoother_.set_move_cost(std::move(cost));
+  }
 
   Mesh_optimization_return_code operator()()
   {
@@ -147,6 +154,7 @@ public:
 private:
   static constexpr int max_flip_passes = 5;
   static constexpr int max_polishing_passes = 20;
+  static constexpr int max_mean_passes = 10;
   static constexpr int max_stalled_passes = 2;
   // what counts as progress of the worst cells (see `Worst_cells_progress`) in the rounds
   // and in the polishing: the polishing's passes cost more and, on meshes that cannot
@@ -190,7 +198,8 @@ private:
 
   // rounds of the final stage, numbered on from the last round `round`, until one changes
   // nothing or the worst cells stop improving (on a mesh that cannot reach the bound, such
-  // as a steeply graded one, passes go on moving vertices back and forth for nothing)
+  // as a steeply graded one, passes go on moving vertices back and forth for nothing); then,
+  // if asked for, passes of mean-angle moves until one moves nothing
   void polish(int round, Energy_guided_flips<C3T3>& flips, double& sum, std::size_t& count,
               const CGAL::Real_timer& timer)
   {
@@ -203,20 +212,38 @@ private:
       const double start = timer.time();
       const auto done = polisher.polish_pass([&]() { return time_is_up(timer); });
       Round_report report;
-      report.round = round + pass + 1;
+      report.round = ++round;
       report.is_polishing = true;
       report.number_of_moves = done.moves;
       report.number_of_splits = done.splits;
       report.number_of_flips = done.flips + done.peels;
-      const auto total = energy_.total();
-      sum = total.first;
-      count = total.second;
-      report.energy = sum / double(count);
-      report.elapsed_time = timer.time();
-      notify(report, report.elapsed_time - start, 0);
+      notify_polishing(report, start, sum, count, timer);
       if(done.moves == 0 && done.flips == 0 && done.peels == 0 && done.splits == 0) break;
       if(progress.stalled()) break;
     }
+    // then the mean-angle moves, if asked for (see `Sliver_polisher::raise_mean_pass()`)
+    for(int pass = 0; options_.mean_angle_moves > 0 && pass < max_mean_passes && !time_is_up(timer); ++pass) {
+      const double start = timer.time();
+      Round_report report;
+      report.round = ++round;
+      report.is_polishing = true;
+      report.number_of_moves =
+          polisher.raise_mean_pass(options_.mean_angle_moves, [&]() { return time_is_up(timer); });
+      notify_polishing(report, start, sum, count, timer);
+      if(report.number_of_moves == 0) break;
+    }
+  }
+
+  // a polishing pass begun at `start` is over: the energy sums recomputed, the visitor told
+  void notify_polishing(Round_report& report, double start, double& sum, std::size_t& count,
+                        const CGAL::Real_timer& timer) const
+  {
+    const auto total = energy_.total();
+    sum = total.first;
+    count = total.second;
+    report.energy = sum / double(count);
+    report.elapsed_time = timer.time();
+    notify(report, report.elapsed_time - start, 0);
   }
 
   void notify(Round_report& report, double smoothing_time, double flip_time) const

@@ -31,7 +31,14 @@
 // - a cell that no move lifts gets an interior edge split (Edge_split.h) when the
 //   smallest angle of the new cells beats that of the old ones, and, unless the
 //   cell is critical, the penalty of the new cells beats that of the old ones;
-//   at most 3% of the vertex count is added.
+//   at most 3% of the vertex count is added;
+// - on request (`mean_angle_moves`, set by make_lattice_mesh_3), after those
+//   passes, a vertex with a cell under a threshold in its star moves up the
+//   gradient of the sum of its star's smallest angles less a cost of its
+//   position (`vertex_move_cost`: a lattice mesh's alignment error), when that
+//   raises it without lowering the star's worst cell under the bound or putting
+//   more of its cells under the bound + 10 degrees: the mean angle of a lattice's
+//   boundary layer, which the max-min moves do not aim at.
 //
 // All may raise the energy a little: this stage runs after the rounds whose
 // energy never increases.
@@ -138,7 +145,85 @@ public:
     return done;
   }
 
+  /// one sweep of mean-angle moves over the movable vertices of the cells under `threshold`
+  /// degrees, in the order of the cells: each moves up the gradient of the sum of its star's
+  /// smallest angles less the smoother's `move_cost()`, when that raises it and neither lowers
+  /// the star's smallest angle under the bound nor puts more of its cells under the bound + 10;
+  /// returns the number of moves
+  template <class Stop>
+  std::size_t raise_mean_pass(double threshold, const Stop& stop)
+  {
+    std::vector<Vertex_handle> vertices;
+    std::unordered_set<Vertex_handle> seen;
+    for(auto c = c3t3_.cells_in_complex_begin(); c != c3t3_.cells_in_complex_end(); ++c) {
+      if(!(energy_.min_dihedral_angle(c) < threshold)) continue;
+      for(int i = 0; i < 4; ++i)
+        if(seen.insert(c->vertex(i)).second) vertices.push_back(c->vertex(i));
+    }
+    std::size_t moves = 0;
+    Ring ring;
+    for(const Vertex_handle& v : vertices) {
+      if(stop()) break;
+      if(!smoother_.is_movable(v) || !smoother_.make_ring(v, ring)) continue;
+      if(raise_mean(ring)) ++moves;
+    }
+    return moves;
+  }
+
 private:
+  // the sum of the smallest angles of the star of the vertex of `r` placed at `x`
+  double star_sum(const Ring& r, const Eigen::Vector3d& x) const
+  {
+    double s = 0;
+    for(const Cell_handle& c : r.complex_cells) s += energy_.min_dihedral_angle(c, r.v, x);
+    return s;
+  }
+
+  // the unit direction `d` in which `score` of the vertex of `r` rises fastest from `x0`, within
+  // the vertex's degrees of freedom, by central differences (the scores are only piecewise
+  // smooth); false if there is none
+  template <class Score>
+  bool ascent_direction(const Ring& r, const Eigen::Vector3d& x0, const Score& score, Eigen::Vector3d& d) const
+  {
+    const double h = 1e-4 * r.max_neighbor_distance;
+    Eigen::Vector3d g;
+    for(int k = 0; k < 3; ++k) {
+      Eigen::Vector3d e = Eigen::Vector3d::Zero();
+      e[k] = h;
+      g[k] = score(x0 + e) - score(x0 - e);
+    }
+    d = smoother_.tangential(r, g);
+    const double n = d.norm();
+    if(!(n > 0) || !std::isfinite(n)) return false;
+    d /= n;
+    return true;
+  }
+
+  // the mean-angle move of the vertex of `r` (see `raise_mean_pass()`)
+  bool raise_mean(const Ring& r) const
+  {
+    const Eigen::Vector3d x0 = energy_.position(r.v);
+    const auto objective = [&](const Eigen::Vector3d& x) { return star_sum(r, x) - smoother_.move_cost(r.v, x); };
+    const double s0 = objective(x0);
+    const double floor = (std::min)(star_quality(r, x0), bound_);
+    const double guard = bound_ + guard_margin;
+    const std::size_t under = count_under(r, x0, guard);
+    Eigen::Vector3d d;
+    if(!ascent_direction(r, x0, objective, d)) return false;
+    double alpha = 0.2 * r.max_neighbor_distance;
+    for(int k = 0; k < max_backtracking_steps; ++k, alpha *= 0.5) {
+      Bare_point p;
+      if(!smoother_.candidate(r, x0 + alpha * d, p) || !smoother_.is_valid_position(r, p)) continue;
+      const Eigen::Vector3d x = Energy::to_eigen(p);
+      if(objective(x) > s0 + 1e-3 && star_quality(r, x) >= floor && count_under(r, x, guard) <= under &&
+         smoother_.keeps_boundary_faithful(r, p)) {
+        smoother_.move(r.v, p);
+        return true;
+      }
+    }
+    return false;
+  }
+
   static constexpr int max_moves_per_vertex = 4;
   /// at most this fraction of the vertex count is added: a mesh far from the bound
   /// everywhere (such as an isotropic mesh under a strongly anisotropic metric) needs
@@ -237,18 +322,8 @@ private:
     const auto score = [&](const Eigen::Vector3d& x) { return critical ? star_quality(r, x) : -star_penalty(r, x); };
     const double s0 = score(x0);
     const double least_gain = critical ? 1e-3 : -Angle_penalty::min_relative_gain * s0;
-    // central differences: both are only piecewise smooth
-    const double h = 1e-4 * r.max_neighbor_distance;
-    Eigen::Vector3d g;
-    for(int k = 0; k < 3; ++k) {
-      Eigen::Vector3d e = Eigen::Vector3d::Zero();
-      e[k] = h;
-      g[k] = score(x0 + e) - score(x0 - e);
-    }
-    Eigen::Vector3d d = smoother_.tangential(r, g);
-    const double n = d.norm();
-    if(!(n > 0) || !std::isfinite(n)) return false;
-    d /= n;
+    Eigen::Vector3d d;
+    if(!ascent_direction(r, x0, score, d)) return false;
     double alpha = 0.2 * r.max_neighbor_distance;
     if(critical && shortest_moves_)
       return lift_critical(r, x0, q0 + least_gain, d, alpha, true) ||

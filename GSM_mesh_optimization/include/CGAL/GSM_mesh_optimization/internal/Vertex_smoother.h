@@ -30,6 +30,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <functional>
 #include <optional>
 #include <tuple>
 #include <type_traits>
@@ -98,6 +99,14 @@ public:
     return !tr_.is_infinite(v) && c3t3_.in_dimension(v) >= lowest_movable_dimension() &&
            c3t3_.in_dimension(v) <= 3;
   }
+
+  /// what a vertex at a position costs the mean-angle moves (`vertex_move_cost`), in degrees
+  void set_move_cost(std::function<double(const Vertex_handle&, const Eigen::Vector3d&)> cost)
+  {
+    move_cost_ = std::move(cost);
+  }
+
+  double move_cost(const Vertex_handle& v, const Eigen::Vector3d& x) const { return move_cost_ ? move_cost_(v, x) : 0.; }
 
   /// the one-ring of `v` from its `star` (all cells incident to `v`, infinite
   /// ones included); false if it has no cell in the complex or no frame
@@ -486,6 +495,7 @@ private:
   const MeshDomain* domain_;
   const Energy& energy_;
   bool freeze_boundary_;
+  std::function<double(const Vertex_handle&, const Eigen::Vector3d&)> move_cost_;
   std::optional<Fidelity> fidelity_; // when the boundary may move
 };
 
