@@ -75,15 +75,13 @@ bool is_conformal(const FrameField& field, const std::vector<Point_3>& points)
   return true;
 }
 
-/// the last stage of `make_lattice_mesh_3()`: GSM in the field's metric \f$ B^T B \f$
-/// (isotropic if the frames are conformal), with or without vertex smoothing, its polishing
-/// aiming at `sliver_bound` degrees (0: none); `time_limit` 0 for none
 /// what a vertex's position costs the mean-angle moves of the last stage: the sum of the
 /// alignment errors (degrees) of its edges in the complex, so that a move must raise the
-/// smallest angles of its star by more than it turns its edges off the lattice (without it,
-/// the moves that raised the elephant's BCC mean angle to 56.3 turned fandisk's edges from
-/// 3.46 to 3.7 degrees off the lattice; with it both improve). Called sequentially: it keeps
-/// the neighbours of the last vertex asked, which the moves do not change.
+/// smallest angles of its star by more than it turns its edges off the lattice (on angles
+/// alone, even with the aligned vertices kept in place, the moves raised the elephant's BCC
+/// mean angle to 56.3-56.5 but turned fandisk's edges from 3.46 to 3.7-3.8 degrees off the
+/// lattice; with it both improve). Called sequentially: it keeps the neighbours of the last
+/// vertex asked, which the moves do not change.
 template <class C3T3, class FrameField>
 class Vertex_alignment_cost
 {
@@ -133,6 +131,10 @@ private:
 /// (BCC) or more (FCC's regular tets), those of the boundary layer rarely do
 constexpr double lattice_mean_angle_threshold = 60;
 
+/// the last stage of `make_lattice_mesh_3()`: GSM in the field's metric \f$ B^T B \f$
+/// (isotropic if the frames are conformal), with or without vertex smoothing, its polishing
+/// aiming at `sliver_bound` degrees (0: none), then its mean-angle moves
+/// under `mean_angle_threshold` degrees (0: none); `time_limit` 0 for none
 template <class C3T3, class MeshDomain, class FrameField>
 void optimize_lattice_mesh(C3T3& c3t3, const MeshDomain& domain, const FrameField& field, const Lattice& lattice,
                            Lattice_mesh_optimization stage, double sliver_bound, int threads, double time_limit,
@@ -326,7 +328,8 @@ C3T3 make_lattice_mesh(const MeshDomain& domain, const FrameField& field, const 
  *       the boundary layer, where the lattice meets the surface, gains angles and alignment
  *       (BCC, 0 -> 60: on the elephant at 10,000 particles the mean smallest angle
  *       55.05 -> 56.11 degrees, mean alignment error 5.58 -> 5.15; on fandisk at 18,000,
- *       57.15 -> 57.63, 3.46 -> 3.37; about twice the time of the last stage); 0 skips them}
+ *       57.15 -> 57.63, 3.46 -> 3.37; the last stage takes several times longer: on the elephant
+ *       2 -> 15 s); 0 skips them}
  *     \cgalParamType{`double`, non-negative}
  *     \cgalParamDefault{60}
  *   \cgalParamNEnd
