@@ -35,6 +35,7 @@
 #include <CGAL/facets_in_complex_3_to_triangle_mesh.h>
 
 #include <CGAL/GSM_mesh_optimization/internal/Angle_penalty.h>
+#include <CGAL/GSM_mesh_optimization/internal/Boundary_fidelity.h>
 #include <CGAL/GSM_mesh_optimization/internal/Edge_split.h>
 #include <CGAL/GSM_mesh_optimization/internal/Energy_guided_flips.h>
 #include <CGAL/GSM_mesh_optimization/internal/Input_mesh_sizing.h>
@@ -994,6 +995,46 @@ void test_cube_with_features()
   VVM_CHECK(on_faces && surface_moved);
 }
 
+// Boundary_fidelity's measure of how far a facet strays, on a hand-made crease: a box with a
+// shallow roof z = 0.2 (1 - |x|) (a ridge of 22.6 degrees, one patch) and a facet at z = 0.1
+// under the ridge, x from -0.6 to 0.4. Along the facet's normal the roof is 0.1 - 0.2 |x| away:
+// the grid with edges in 4 (x = 0.4 - i/4, and the centroid at x = 1/15) misses the ridge by
+// 1/15, the grid with edges in 8 reaches x = 0.025.
+void test_boundary_fidelity_on_a_crease()
+{
+  Surface_mesh house;
+  std::vector<Surface_mesh::Vertex_index> v;
+  for(const auto& p : {K::Point_3(-1, -1, -1), K::Point_3(1, -1, -1), K::Point_3(1, 1, -1), K::Point_3(-1, 1, -1),
+                       K::Point_3(-1, -1, 0), K::Point_3(1, -1, 0), K::Point_3(1, 1, 0), K::Point_3(-1, 1, 0),
+                       K::Point_3(0, -1, 0.2), K::Point_3(0, 1, 0.2)})
+    v.push_back(house.add_vertex(p));
+  const std::vector<std::vector<int>> faces = {{0, 3, 2, 1}, {0, 1, 5, 8, 4}, {2, 3, 7, 9, 6}, {1, 2, 6, 5},
+                                               {3, 0, 4, 7}, {4, 8, 9, 7}, {8, 5, 6, 9}};
+  for(const auto& f : faces) {
+    std::vector<Surface_mesh::Vertex_index> fv;
+    for(int i : f) fv.push_back(v[std::size_t(i)]);
+    house.add_face(fv);
+  }
+  CGAL::Polygon_mesh_processing::triangulate_faces(house);
+  if(!CGAL::Polygon_mesh_processing::is_outward_oriented(house)) CGAL::Polygon_mesh_processing::reverse_face_orientations(house);
+  const Cube_domain domain(house);
+  const auto hit = domain.construct_intersection_object()(K::Segment_3(K::Point_3(0, 0, 0), K::Point_3(0, 0, 1)));
+  VVM_CHECK(std::get<2>(hit) == 2);
+  const auto patch = domain.surface_patch_index(std::get<1>(hit));
+  const Cube_c3t3 empty;
+  const GSM::internal::Boundary_fidelity<Cube_c3t3, Cube_domain> fidelity(empty, &domain);
+  typedef GSM::internal::Boundary_fidelity<Cube_c3t3, Cube_domain> Fidelity;
+  const Fidelity::Triangle t = {{K::Point_3(-0.6, -0.3, 0.1), K::Point_3(0.4, -0.3, 0.1), K::Point_3(0.4, 0.5, 0.1)}};
+  const double coarse = fidelity.deviation(t, patch, Fidelity::coarse_grid);
+  const double fine = fidelity.deviation(t, patch, Fidelity::fine_grid);
+  std::printf("  crease under a facet: deviation %.6f on the coarse grid, %.6f on the fine one (ridge 0.1)\n",
+              coarse, fine);
+  VVM_CHECK_CLOSE(coarse, 0.1 - 0.2 / 15, 1e-9);
+  VVM_CHECK_CLOSE(fine, 0.1 - 0.2 * 0.025, 1e-9);
+  // the fine grid's new points only (the coarse ones measured already), the centroid included
+  VVM_CHECK_CLOSE(fidelity.deviation(t, patch, Fidelity::fine_grid, Fidelity::coarse_grid), fine, 1e-9);
+}
+
 // Parallel sweeps are deterministic: the batches do not depend on the threads.
 // A sizing field matters only up to a constant factor (fitted to the vertex
 // count). The adaptive run follows the field. The boundary does not get
@@ -1451,6 +1492,7 @@ int main()
   test_sphere_run();
   test_bad_input();
   test_cube_with_features();
+  test_boundary_fidelity_on_a_crease();
   test_threads_fields_and_boundary();
   test_input_mesh_sizing();
   test_several_subdomains();
