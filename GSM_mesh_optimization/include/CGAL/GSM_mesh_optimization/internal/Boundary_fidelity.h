@@ -13,13 +13,13 @@
 // bound is the largest deviation of its initial facets, or a floor: a high
 // quantile of the initial deviations (not their maximum: facets beside feature
 // edges can measure far more than they stray). A facet may stray as far as the
-// largest bound of its vertices. The grid splits the facet's edges in 8; where
-// the surface has a crease the domain does not protect, the distance peaks on
-// the crease, between grid points, and with edges in 4 moves that kept the
-// bounds let the boundary's Hausdorff distance to the surface grow by 16%
-// (dragknob). A moved facet is first measured on the grid with edges in 4,
-// which the finer one contains, and on the rest of the finer one only when
-// that comes within a fifth of its bound. Everything is computed at the start; later
+// largest bound of its vertices. Where the surface has a crease the domain
+// does not protect, the distance peaks on the crease, between grid points: on a
+// grid with the facet's edges in 4, moves that kept the bounds let the
+// boundary's Hausdorff distance to the surface grow by 16% (dragknob). So the
+// bounds are measured on that grid and on one with edges in 8, which contains
+// it, and a moved facet that comes within a fifth of its bound on the first
+// must keep its bound on the second too. Everything is computed at the start; later
 // calls only read it and the domain, so they are thread-safe.
 
 #ifndef CGAL_GSM_MESH_OPTIMIZATION_INTERNAL_BOUNDARY_FIDELITY_H
@@ -59,44 +59,51 @@ public:
   /// the grids of a facet: its edges split in this many parts, plus its centroid
   static constexpr int coarse_grid = 4;
   static constexpr int fine_grid = 8;
-  /// a moved facet whose coarse measure is over this share of its bound is measured on the
-  /// fine grid too
+  /// a moved facet whose coarse measure is over this share of its coarse bound is measured on
+  /// the fine grid too
   static constexpr double fine_check_share = 0.8;
 
   Boundary_fidelity(const C3T3& c3t3, const MeshDomain* domain) : domain_(domain)
   {
     const Tr& tr = c3t3.triangulation();
-    std::vector<double> deviations;
+    std::array<std::vector<double>, 2> deviations;
     for(auto f = c3t3.facets_in_complex_begin(); f != c3t3.facets_in_complex_end(); ++f) {
       Triangle t;
       for(int k = 0; k < 3; ++k) t[k] = tr.geom_traits().construct_point_3_object()(tr.point(f->first, (f->second + 1 + k) & 3));
-      const double d = deviation(t, c3t3.surface_patch_index(*f), fine_grid);
-      deviations.push_back(d);
-      for(int k = 0; k < 3; ++k) {
-        double& b = vertex_bound_[f->first->vertex((f->second + 1 + k) & 3)];
-        b = (std::max)(b, d);
+      const double coarse = deviation(t, c3t3.surface_patch_index(*f), coarse_grid);
+      const double d[2] = {coarse, (std::max)(coarse, deviation(t, c3t3.surface_patch_index(*f), fine_grid, coarse_grid))};
+      for(int g = 0; g < 2; ++g) {
+        deviations[g].push_back(d[g]);
+        for(int k = 0; k < 3; ++k) {
+          double& b = vertex_bounds_[f->first->vertex((f->second + 1 + k) & 3)][g];
+          b = (std::max)(b, d[g]);
+        }
       }
     }
-    if(deviations.empty()) return;
-    const auto q = deviations.begin() + std::ptrdiff_t(floor_quantile * double(deviations.size() - 1));
-    std::nth_element(deviations.begin(), q, deviations.end());
-    floor_ = *q;
+    for(int g = 0; g < 2; ++g) {
+      if(deviations[g].empty()) return;
+      const auto q = deviations[g].begin() + std::ptrdiff_t(floor_quantile * double(deviations[g].size() - 1));
+      std::nth_element(deviations[g].begin(), q, deviations[g].end());
+      floors_[g] = *q;
+    }
   }
 
-  /// how far the facets around `v` may stray: as far as they did at the start, or the floor
-  double bound(const Vertex_handle& v) const
+  /// how far the facets around `v` may stray, measured on the coarse grid (`fine` false) or
+  /// the fine one: as far as they did at the start, or the floor
+  double bound(const Vertex_handle& v, bool fine = false) const
   {
-    const auto it = vertex_bound_.find(v);
-    return it == vertex_bound_.end() ? floor_ : (std::max)(floor_, it->second);
+    const auto it = vertex_bounds_.find(v);
+    return it == vertex_bounds_.end() ? floors_[fine] : (std::max)(floors_[fine], it->second[fine]);
   }
 
   /// whether the facet `t` of the patch `patch`, on the vertices `v`, strays no further than they allow
   bool is_faithful(const Triangle& t, const Surface_patch_index& patch, const std::array<Vertex_handle, 3>& v) const
   {
+    const auto allowed = [&](bool fine) { return (std::max)({bound(v[0], fine), bound(v[1], fine), bound(v[2], fine)}); };
     const double coarse = deviation(t, patch, coarse_grid);
-    const double allowed = (std::max)({bound(v[0]), bound(v[1]), bound(v[2])});
-    if(!(coarse <= allowed)) return false;
-    return coarse <= fine_check_share * allowed || deviation(t, patch, fine_grid, coarse_grid) <= allowed;
+    const double coarse_bound = allowed(false);
+    if(!(coarse <= coarse_bound)) return false;
+    return coarse <= fine_check_share * coarse_bound || deviation(t, patch, fine_grid, coarse_grid) <= allowed(true);
   }
 
   /// the largest distance from the points of the grid of `t` with `m` subdivisions (and its
@@ -153,8 +160,8 @@ private:
   }
 
   const MeshDomain* domain_;
-  std::unordered_map<Vertex_handle, double> vertex_bound_;
-  double floor_ = 0;
+  std::unordered_map<Vertex_handle, std::array<double, 2>> vertex_bounds_; // coarse, fine
+  std::array<double, 2> floors_ = {{0, 0}};
 };
 
 } // namespace internal

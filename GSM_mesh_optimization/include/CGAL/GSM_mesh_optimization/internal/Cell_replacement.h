@@ -41,7 +41,17 @@ public:
 
   explicit Complex_cell_replacement(C3T3& c3t3) : c3t3_(c3t3), tr_(c3t3.triangulation()) {}
 
+  /// from now on, the vertices of the cells each change creates or peels go to `log`
+  /// (none: nullptr), for passes that look again only where something changed
+  void set_change_log(std::vector<Vertex_handle>* log) { log_ = log; }
+
 protected:
+  void log_vertices(const Cell_handle& c)
+  {
+    if(log_ != nullptr)
+      for(int i = 0; i < 4; ++i) log_->push_back(c->vertex(i));
+  }
+
   typename Tr::Geom_traits::Point_3 bare(const Vertex_handle& v) const
   {
     return tr_.geom_traits().construct_point_3_object()(tr_.point(v));
@@ -149,7 +159,10 @@ protected:
   // Facets between two of the new cells are inside the flipped region: never surface.
   void claim(const std::vector<Cell_handle>& cells, const Subdomain_index& s)
   {
-    for(const Cell_handle& c : cells) c3t3_.add_to_complex(c, s);
+    for(const Cell_handle& c : cells) {
+      c3t3_.add_to_complex(c, s);
+      log_vertices(c);
+    }
     if constexpr(!Is_triangulation_complex<C3T3>::value) copy_surface_data(cells);
   }
   void claim(std::initializer_list<Cell_handle> cells, const Subdomain_index& s)
@@ -176,6 +189,7 @@ protected:
 
   C3T3& c3t3_;
   Tr& tr_;
+  std::vector<Vertex_handle>* log_ = nullptr;
 };
 
 /// a change of connectivity taken when it lowers the mean energy

@@ -22,6 +22,7 @@
 #include <algorithm>
 #include <array>
 #include <set>
+#include <unordered_set>
 #include <vector>
 
 namespace CGAL {
@@ -68,10 +69,23 @@ public:
   {}
 
   /// one pass over the edges (3-2, edge removal) then the facets (multi-face
-  /// removal) of the complex, then the flat boundary cells
-  Flip_counts flip_pass()
+  /// removal) of the complex, then the flat boundary cells; with `around`, only
+  /// those of the cells with two vertices or more in it (the vertices of the cells
+  /// the last pass changed: elsewhere nothing changed since that pass tried them).
+  /// The vertices of the cells this pass changes go to `changed`, if given.
+  Flip_counts flip_pass(const std::vector<Vertex_handle>* around = nullptr,
+                        std::vector<Vertex_handle>* changed = nullptr)
   {
     Flip_counts done;
+    std::unordered_set<Vertex_handle> near;
+    if(around != nullptr) near.insert(around->begin(), around->end());
+    const auto is_near = [&](const Cell_handle& c) {
+      if(around == nullptr) return true;
+      int n = 0;
+      for(int i = 0; i < 4; ++i) n += near.count(c->vertex(i)) ? 1 : 0;
+      return n >= 2;
+    };
+    set_change_log(changed);
     // Handles go stale as cells are replaced: collect vertex tuples, re-find each.
     // Only around cells worse than the mean: replacing cells that are all better
     // than the mean seldom lowers it, and checking them all is most of the cost.
@@ -79,7 +93,7 @@ public:
     std::vector<std::array<Vertex_handle, 3>> facets;
     const double threshold = candidate_factor * this->mean();
     for(auto c = c3t3_.cells_in_complex_begin(); c != c3t3_.cells_in_complex_end(); ++c) {
-      if(!(energy_.cell(c) > threshold)) continue;
+      if(!(energy_.cell(c) > threshold) || !is_near(c)) continue;
       for(int i = 0; i < 4; ++i) {
         for(int j = i + 1; j < 4; ++j) edges.push_back(sorted(std::array<Vertex_handle, 2>{{c->vertex(i), c->vertex(j)}}));
         if(!c3t3_.is_in_complex(c, i))
@@ -113,9 +127,13 @@ public:
       }
     }
     // flat cells lying on the surface: no flip and no move can give them volume
-    if(boundary_fixed_) return done;
+    if(boundary_fixed_) {
+      set_change_log(nullptr);
+      return done;
+    }
     std::vector<std::array<Vertex_handle, 4>> flat_boundary_cells;
     for(auto c = c3t3_.cells_in_complex_begin(); c != c3t3_.cells_in_complex_end(); ++c) {
+      if(!is_near(c)) continue;
       int surface_facets = 0;
       for(int i = 0; i < 4; ++i) surface_facets += c3t3_.is_in_complex(c, i) ? 1 : 0;
       if(surface_facets == 2)
@@ -127,7 +145,16 @@ public:
       if(tr_.is_cell(t[0], t[1], t[2], t[3], c, i, j, k, l) && try_peel_boundary_cell(c))
         ++done.boundary_peels;
     }
+    set_change_log(nullptr);
     return done;
+  }
+
+  /// the vertices of the cells the changes create or peel go to `log` (none: nullptr)
+  void set_change_log(std::vector<Vertex_handle>* log)
+  {
+    Base::set_change_log(log);
+    edge_removal_.set_change_log(log);
+    face_removal_.set_change_log(log);
   }
 
   /// removes from the complex a nearly flat cell `c` with two surface facets of one
@@ -191,6 +218,7 @@ private:
     while(++fc != fdone);
     if(!accept(Facet(c, out[0]), Facet(c, out[1]))) return false;
     const double e = energy_.cell(c);
+    this->log_vertices(c);
 
     c3t3_.remove_from_complex(Facet(c, in[0]));
     c3t3_.remove_from_complex(Facet(c, in[1]));
@@ -218,6 +246,7 @@ private:
     const Facet f(c, inner);
     if(!accept(f, f)) return false;
     const double e = energy_.cell(c);
+    this->log_vertices(c);
     for(int i = 0; i < 4; ++i)
       if(i != inner) c3t3_.remove_from_complex(Facet(c, i));
     c3t3_.remove_from_complex(c);

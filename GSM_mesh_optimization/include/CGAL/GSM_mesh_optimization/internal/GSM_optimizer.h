@@ -119,12 +119,17 @@ public:
       const double smoothing_start = timer.time();
       if(options_.do_smooth) report.number_of_moves = smoothing_pass(sum, timer);
       const double flips_start = timer.time();
-      if(options_.do_flip && !time_is_up(timer))
+      if(options_.do_flip && !time_is_up(timer)) {
+        // after the first pass, only where the last one changed cells
+        std::vector<Vertex_handle> changed, around;
         for(int pass = 0; pass < max_flip_passes; ++pass) {
-          const std::size_t n = flips.flip_pass().total();
+          around.swap(changed);
+          changed.clear();
+          const std::size_t n = flips.flip_pass(pass == 0 ? nullptr : &around, &changed).total();
           report.number_of_flips += n;
           if(n == 0 || time_is_up(timer)) break;
         }
+      }
       // recompute exactly: the running sum only guides the flips
       total = energy_.total();
       sum = total.first;
