@@ -71,7 +71,8 @@ public:
   /// one pass over the edges (3-2, edge removal) then the facets (multi-face
   /// removal) of the complex, then the flat boundary cells; with `around`, only
   /// those of the cells with two vertices or more in it (the vertices of the cells
-  /// the last pass changed: elsewhere nothing changed since that pass tried them).
+  /// the last pass changed: elsewhere only the mean, which a change must beat, has changed
+  /// since that pass tried them).
   /// The vertices of the cells this pass changes go to `changed`, if given.
   Flip_counts flip_pass(const std::vector<Vertex_handle>* around = nullptr,
                         std::vector<Vertex_handle>* changed = nullptr)
