@@ -1052,6 +1052,13 @@ void test_boundary_fidelity_on_a_crease()
   VVM_CHECK_CLOSE(fine, 0.1 - 0.2 * 0.025, 1e-9);
   // the fine grid's new points only (the coarse ones measured already), the centroid included
   VVM_CHECK_CLOSE(fidelity.deviation(t, patch, Fidelity::fine_grid, Fidelity::coarse_grid), fine, 1e-9);
+  // the test with a limit (short queries first) agrees with the measures on both sides of them
+  for(const auto& grid : {std::make_pair(Fidelity::coarse_grid, coarse), std::make_pair(Fidelity::fine_grid, fine)}) {
+    VVM_CHECK(fidelity.deviates_at_most(t, patch, grid.first, 0, grid.second + 1e-6));
+    VVM_CHECK(!fidelity.deviates_at_most(t, patch, grid.first, 0, grid.second - 1e-6));
+  }
+  VVM_CHECK(fidelity.deviates_at_most(t, patch, Fidelity::coarse_grid, 0, 1.)); // beyond the normal segments' reach
+  VVM_CHECK(!fidelity.deviates_at_most(t, patch, Fidelity::coarse_grid, 0, 0.));
 }
 
 // Parallel sweeps are deterministic: the batches do not depend on the threads.

@@ -19,7 +19,12 @@
 // boundary's Hausdorff distance to the surface grow by 16% (dragknob). So the
 // bounds are measured on that grid and on one with edges in 8, which contains
 // it, and a moved facet that comes within a fifth of its bound on the first
-// must keep its bound on the second too. Everything is computed at the start; later
+// must keep its bound on the second too. A moved facet is only tested against its
+// bounds: a point whose normal segment as long as the bound meets the surface is
+// close enough (one short query in place of two or more of the measure, which
+// looks for the nearest of the intersections within the full reach: the domain's
+// intersection queries went from 40% of GSM's time on bunny00 to a quarter).
+// Everything is computed at the start; later
 // calls only read it and the domain, so they are thread-safe.
 
 #ifndef CGAL_GSM_MESH_OPTIMIZATION_INTERNAL_BOUNDARY_FIDELITY_H
@@ -100,10 +105,10 @@ public:
   bool is_faithful(const Triangle& t, const Surface_patch_index& patch, const std::array<Vertex_handle, 3>& v) const
   {
     const auto allowed = [&](bool fine) { return (std::max)({bound(v[0], fine), bound(v[1], fine), bound(v[2], fine)}); };
-    const double coarse = deviation(t, patch, coarse_grid);
     const double coarse_bound = allowed(false);
-    if(!(coarse <= coarse_bound)) return false;
-    return coarse <= fine_check_share * coarse_bound || deviation(t, patch, fine_grid, coarse_grid) <= allowed(true);
+    if(deviates_at_most(t, patch, coarse_grid, 0, fine_check_share * coarse_bound)) return true;
+    return deviates_at_most(t, patch, coarse_grid, 0, coarse_bound) &&
+           deviates_at_most(t, patch, fine_grid, coarse_grid, allowed(true));
   }
 
   /// the largest distance from the points of the grid of `t` with `m` subdivisions (and its
@@ -114,27 +119,55 @@ public:
   /// centroid: the caller has measured them
   double deviation(const Triangle& t, const Surface_patch_index& patch, int m, int known = 0) const
   {
+    double d = 0;
+    for_each_grid_point(t, m, known, [&](const Bare_point& s, const Vector_3& reach) {
+      d = (std::max)(d, distance_along(s, reach, patch));
+      return true;
+    });
+    return d;
+  }
+
+  /// whether `deviation(t, patch, m, known)` is at most `limit`, found with fewer and shorter
+  /// queries: a point whose normal segment within `limit` meets the surface is close enough
+  bool deviates_at_most(const Triangle& t, const Surface_patch_index& patch, int m, int known, double limit) const
+  {
+    return for_each_grid_point(t, m, known, [&](const Bare_point& s, const Vector_3& reach) {
+      const double length = std::sqrt(CGAL::to_double(reach.squared_length()));
+      if(!(limit < length)) return true; // no point of the segment is further
+      if(limit > 1e-9 * length) {
+        const typename MeshDomain::Intersection i =
+            domain_->construct_intersection_object()(Segment_3(s - reach * (limit / length), s + reach * (limit / length)));
+        if(std::get<2>(i) == 2) return true; // the nearest intersection is within `limit`
+      }
+      return distance_along(s, reach, patch) <= limit;
+    });
+  }
+
+private:
+  // calls `f(point, reach)` on the points of `deviation()`'s grid, with the half normal segment
+  // along which they are measured, while it returns true; false if it returned false
+  template <class F>
+  static bool for_each_grid_point(const Triangle& t, int m, int known, const F& f)
+  {
     const Vector_3 n = CGAL::cross_product(t[1] - t[0], t[2] - t[0]);
     const double area2 = CGAL::to_double(n.squared_length());
-    if(!(area2 > 0)) return 0;
+    if(!(area2 > 0)) return true;
     double longest2 = 0;
     for(int k = 0; k < 3; ++k)
       longest2 = (std::max)(longest2, CGAL::to_double(CGAL::squared_distance(t[k], t[(k + 1) % 3])));
     const Vector_3 reach = n * (0.5 * std::sqrt(longest2 / area2));
-    double d = distance_along(CGAL::centroid(t[0], t[1], t[2]), reach, patch);
+    if(!f(CGAL::centroid(t[0], t[1], t[2]), reach)) return false;
+    const int step = known > 0 ? m / known : 0;
     for(int i = 0; i < m; ++i)
       for(int j = 0; i + j <= m; ++j) {
         const int k = m - i - j;
         if(j == m || k == m) continue; // the vertices lie on the surface
-        const int step = known > 0 ? m / known : 0;
         if(step > 0 && i % step == 0 && j % step == 0) continue;
-        d = (std::max)(d, distance_along(CGAL::barycenter(t[0], double(i) / m, t[1], double(j) / m, t[2], double(k) / m),
-                                         reach, patch));
+        if(!f(CGAL::barycenter(t[0], double(i) / m, t[1], double(j) / m, t[2], double(k) / m), reach)) return false;
       }
-    return d;
+    return true;
   }
 
-private:
   // the domain returns any intersection of a segment: shrink it past each one
   // found, down to the nearest (or give up after a few)
   static constexpr int max_shrinks = 4;
