@@ -140,6 +140,35 @@ tetrahedron_quality(const std::array<Eigen::Vector3d, 4>& p)
 
 /*!
  * \ingroup PkgGSMMeshOptimizationQuality
+ * the smallest dihedral angle, in degrees, of the tetrahedron with vertices `p[0..3]`:
+ * `tetrahedron_quality(p).min_dihedral_angle()` with one arc cosine in place of six and
+ * none of the other measures (the optimizers evaluate it millions of times).
+ */
+inline double tetrahedron_min_dihedral_angle(const std::array<Eigen::Vector3d, 4>& p)
+{
+  constexpr double rad_to_deg = 57.295779513082320876798154814105;
+  const Eigen::Vector3d a = p[1] - p[0], b = p[2] - p[0], c = p[3] - p[0];
+  // the faces' area vectors, as in tetrahedron_quality(): the angle at edge (i, j) is
+  // pi minus the angle between those of the faces opposite the two other vertices
+  const std::array<Eigen::Vector3d, 4> n{{(p[2] - p[1]).cross(p[3] - p[1]), c.cross(b), a.cross(c), b.cross(a)}};
+  std::array<double, 4> length;
+  for(int i = 0; i < 4; ++i) length[i] = n[i].norm();
+  double largest_cos = -1;
+  for(int e = 0; e < 6; ++e) {
+    const std::array<int, 2> ij = Tetrahedron_quality::edge_vertices(e);
+    int kl[2], m = 0;
+    for(int v = 0; v < 4; ++v)
+      if(v != ij[0] && v != ij[1]) kl[m++] = v;
+    // the same products as tetrahedron_quality()'s (4 * half lengths): the same angles
+    const double denom = 4. * (0.5 * length[kl[0]]) * (0.5 * length[kl[1]]);
+    if(!(denom > 0)) return 0; // a face of zero area: the angle is taken as 0
+    largest_cos = (std::max)(largest_cos, std::clamp(-n[kl[0]].dot(n[kl[1]]) / denom, -1., 1.));
+  }
+  return std::acos(largest_cos) * rad_to_deg;
+}
+
+/*!
+ * \ingroup PkgGSMMeshOptimizationQuality
  * computes the quality measures of the tetrahedron `(p0, p1, p2, p3)` mapped
  * by the matrix `B` (anisotropic quality: the tetrahedron as seen in the
  * isotropic "imagined" space of the metric `B^T B`).

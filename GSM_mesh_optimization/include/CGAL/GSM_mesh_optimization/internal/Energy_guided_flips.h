@@ -93,8 +93,12 @@ public:
     std::vector<std::array<Vertex_handle, 2>> edges;
     std::vector<std::array<Vertex_handle, 3>> facets;
     const double threshold = candidate_factor * this->mean();
-    for(auto c = c3t3_.cells_in_complex_begin(); c != c3t3_.cells_in_complex_end(); ++c) {
-      if(!(energy_.cell(c) > threshold) || !is_near(c)) continue;
+    std::vector<Cell_handle> cells = energy_.cells_in_complex();
+    if(around != nullptr) cells.erase(std::remove_if(cells.begin(), cells.end(), [&](const Cell_handle& c) { return !is_near(c); }), cells.end());
+    const std::vector<double> cell_energy = Energy::per_cell(cells, [this](const Cell_handle& c) { return energy_.cell(c); });
+    for(std::size_t n = 0; n < cells.size(); ++n) {
+      const Cell_handle& c = cells[n];
+      if(!(cell_energy[n] > threshold)) continue;
       for(int i = 0; i < 4; ++i) {
         for(int j = i + 1; j < 4; ++j) edges.push_back(sorted(std::array<Vertex_handle, 2>{{c->vertex(i), c->vertex(j)}}));
         if(!c3t3_.is_in_complex(c, i))

@@ -110,7 +110,10 @@ public:
 
     Mesh_optimization_return_code result = MAX_ITERATION_NUMBER_REACHED;
     // the rounds stop once the worst cells gain less than 0.05 degree and the cells under the
-    // bound drop by less than a 100th, two rounds in a row: later rounds barely move them
+    // bound drop by less than a 20th, two rounds in a row: later rounds barely move them, and
+    // the polishing lifts the last ones for a fraction of a round's time (fandisk at 100k
+    // vertices: rounds 5 to 11 of 3.5 s took the cells under 30 degrees from 165 to 152, and
+    // the polishing passes of 0.3 s all of them to none)
     Worst_cells_progress progress(energy_, bound(), round_angle_gain, round_count_share);
     int round = 1;
     for(; round <= options_.max_rounds; ++round) {
@@ -166,7 +169,7 @@ private:
   // reach the bound, raise the smallest angle by a tenth of a degree a pass while pushing
   // more cells under the bound
   static constexpr double round_angle_gain = 0.05; // degrees
-  static constexpr double round_count_share = 1. / 100;
+  static constexpr double round_count_share = 1. / 20;
   static constexpr double polishing_angle_gain = 0.5; // degrees
   static constexpr double polishing_count_share = 1. / 50;
 

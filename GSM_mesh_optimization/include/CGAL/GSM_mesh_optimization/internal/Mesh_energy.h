@@ -17,11 +17,15 @@
 
 #include <Eigen/Core>
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <array>
 #include <memory>
 #include <type_traits>
 #include <utility>
+#include <vector>
 
 namespace CGAL {
 namespace GSM_mesh_optimization {
@@ -105,9 +109,9 @@ public:
   double min_dihedral_angle(const Eigen::Vector3d& p0, const Eigen::Vector3d& p1, const Eigen::Vector3d& p2,
                             const Eigen::Vector3d& p3) const
   {
-    if(metric_.is_isotropic()) return tetrahedron_quality({{p0, p1, p2, p3}}).min_dihedral_angle();
+    if(metric_.is_isotropic()) return tetrahedron_min_dihedral_angle({{p0, p1, p2, p3}});
     const Eigen::Matrix3d B = metric_(0.25 * (p0 + p1 + p2 + p3));
-    return tetrahedron_quality({{B * p0, B * p1, B * p2, B * p3}}).min_dihedral_angle();
+    return tetrahedron_min_dihedral_angle({{B * p0, B * p1, B * p2, B * p3}});
   }
 
   /// the same for cell `c` with its vertex `v` at `x`
@@ -190,11 +194,10 @@ public:
   /// sum and number of the energies of the cells in the complex
   std::pair<double, std::size_t> total() const
   {
+    const std::vector<double> e = per_cell(cells_in_complex(), [this](const Cell_handle& c) { return cell(c); });
     double sum = 0;
-    std::size_t n = 0;
-    for(auto c = c3t3_.cells_in_complex_begin(); c != c3t3_.cells_in_complex_end(); ++c, ++n)
-      sum += cell(c);
-    return {sum, n};
+    for(double x : e) sum += x; // in the complex's order, whatever the threads
+    return {sum, e.size()};
   }
 
   /// the smallest dihedral angle (degrees, in the metric) of the cells in the complex, and how
@@ -203,12 +206,33 @@ public:
   {
     double worst = 180;
     std::size_t n = 0;
-    for(auto c = c3t3_.cells_in_complex_begin(); c != c3t3_.cells_in_complex_end(); ++c) {
-      const double q = min_dihedral_angle(c);
+    for(double q : per_cell(cells_in_complex(), [this](const Cell_handle& c) { return min_dihedral_angle(c); })) {
       worst = (std::min)(worst, q);
       n += q < bound ? 1 : 0;
     }
     return {worst, n};
+  }
+
+  /// the cells in the complex, in its order
+  std::vector<Cell_handle> cells_in_complex() const
+  {
+    std::vector<Cell_handle> cells;
+    cells.reserve(c3t3_.number_of_cells_in_complex());
+    for(auto c = c3t3_.cells_in_complex_begin(); c != c3t3_.cells_in_complex_end(); ++c) cells.push_back(c);
+    return cells;
+  }
+
+  /// `f(c)` for each of `cells`, computed in parallel (the scans of the whole mesh that the
+  /// rounds and the polishing make are most of their time where little moves)
+  template <class F>
+  static std::vector<double> per_cell(const std::vector<Cell_handle>& cells, const F& f)
+  {
+    std::vector<double> out(cells.size());
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, cells.size(), 1024),
+                      [&](const tbb::blocked_range<std::size_t>& r) {
+      for(std::size_t i = r.begin(); i != r.end(); ++i) out[i] = f(cells[i]);
+    });
+    return out;
   }
 
 private:

@@ -250,9 +250,11 @@ private:
   std::vector<std::pair<double, std::array<Vertex_handle, 4>>> bad_cells() const
   {
     std::vector<std::pair<double, std::array<Vertex_handle, 4>>> bad;
-    for(auto c = c3t3_.cells_in_complex_begin(); c != c3t3_.cells_in_complex_end(); ++c) {
-      const double q = energy_.min_dihedral_angle(c);
-      if(q < bound_) bad.push_back({q, {{c->vertex(0), c->vertex(1), c->vertex(2), c->vertex(3)}}});
+    const std::vector<Cell_handle> cells = energy_.cells_in_complex();
+    const std::vector<double> angles = Energy::per_cell(cells, [this](const Cell_handle& c) { return energy_.min_dihedral_angle(c); });
+    for(std::size_t i = 0; i < cells.size(); ++i) {
+      const Cell_handle& c = cells[i];
+      if(angles[i] < bound_) bad.push_back({angles[i], {{c->vertex(0), c->vertex(1), c->vertex(2), c->vertex(3)}}});
     }
     std::stable_sort(bad.begin(), bad.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
     return bad;
