@@ -21,7 +21,9 @@
 #include <Eigen/Geometry>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdlib>
 #include <vector>
 
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
@@ -174,6 +176,33 @@ void test_flat_tetrahedron()
   for(double a : q.dihedral_angles) VVM_CHECK(a >= 0 && a <= 180);
 }
 
+// tetrahedron_min_dihedral_angle() gives exactly tetrahedron_quality()'s smallest angle: on the
+// hand-made shapes above (regular, sliver, cap, needle, inverted, flat, a point repeated) and
+// on 1000 random tetrahedra
+void test_smallest_angle_alone()
+{
+  std::vector<std::array<Eigen::Vector3d, 4>> tets = {
+      {{Eigen::Vector3d(1, 1, 1), Eigen::Vector3d(1, -1, -1), Eigen::Vector3d(-1, 1, -1), Eigen::Vector3d(-1, -1, 1)}},
+      {{Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(1, 0, 0), Eigen::Vector3d(0, 1, 0), Eigen::Vector3d(1, 1, 0.01)}},
+      {{Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(1, 0, 0), Eigen::Vector3d(0.5, 1, 0), Eigen::Vector3d(0.5, 0.3, 0.01)}},
+      {{Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(0.01, 0, 0), Eigen::Vector3d(0, 0.01, 0), Eigen::Vector3d(0, 0, 1)}},
+      {{Eigen::Vector3d(1, 1, 1), Eigen::Vector3d(-1, 1, -1), Eigen::Vector3d(1, -1, -1), Eigen::Vector3d(-1, -1, 1)}},
+      {{Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(1, 0, 0), Eigen::Vector3d(0, 1, 0), Eigen::Vector3d(1, 1, 0)}},
+      {{Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(0, 1, 0), Eigen::Vector3d(0, 0, 1)}}};
+  std::srand(7);
+  const auto coordinate = []() { return double(std::rand()) / RAND_MAX - 0.5; };
+  for(int n = 0; n < 1000; ++n) {
+    std::array<Eigen::Vector3d, 4> t;
+    for(auto& p : t) p = Eigen::Vector3d(coordinate(), coordinate(), coordinate());
+    tets.push_back(t);
+  }
+  std::size_t equal = 0;
+  for(const auto& t : tets) equal += GSM::tetrahedron_min_dihedral_angle(t) == GSM::tetrahedron_quality(t).min_dihedral_angle() ? 1 : 0;
+  VVM_CHECK_EQUAL(equal, tets.size());
+  VVM_CHECK_CLOSE(GSM::tetrahedron_min_dihedral_angle(tets[0]), regular_dihedral, 1e-12);
+  VVM_CHECK_EQUAL(GSM::tetrahedron_min_dihedral_angle(tets[6]), 0.);
+}
+
 void test_mapped_tetrahedron()
 {
   // the regular tet stretched by diag(4, 1, 1) is poor; mapped back by
@@ -300,6 +329,7 @@ int main()
   test_cap();
   test_needle();
   test_flat_tetrahedron();
+  test_smallest_angle_alone();
   test_mapped_tetrahedron();
   test_triangulation_statistics();
   test_accumulated_counts();
