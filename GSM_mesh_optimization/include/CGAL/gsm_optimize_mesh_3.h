@@ -206,7 +206,7 @@ gsm_optimize(C3T3& c3t3, const MeshDomain* domain, bool boundary_fixed, const Na
  * The rounds stop when one lowers the mean energy by less than
  * `convergence_threshold`, or when two rounds in a row have neither raised the
  * smallest dihedral angle by 0.05 degree nor lowered the number of cells under
- * `sliver_bound` (30 degrees if it is 0) by a 100th: past that point the energy
+ * `sliver_bound` (30 degrees if it is 0) by a 20th: past that point the energy
  * creeps down while the worst cells stay as they are. Then a polishing stage lifts the cells whose
  * smallest dihedral angle is still under `sliver_bound` (typically next to the
  * surface, where vertices only slide). The worst of them, a 200th of the cells
