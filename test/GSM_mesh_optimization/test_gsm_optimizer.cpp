@@ -1310,9 +1310,10 @@ void test_input_mesh_sizing()
               qu.n_min_dihedral_below[2]);
   VVM_CHECK(before > 1.8);
   VVM_CHECK(std::abs(after / before - 1) < 0.1);
-  // what the default avoids: one size fights the grading (1.90 -> 1.72 when written), by at
-  // least twice as much as the input's own sizes do
-  VVM_CHECK(after_uniform < 0.93 * before);
+  // what the default avoids: one size fights the grading (1.90 -> 1.72 when written, 1.77 since
+  // the rounds stop once the cells under 30 degrees drop by less than a 20th), by at least
+  // twice as much as the input's own sizes do
+  VVM_CHECK(after_uniform < 0.95 * before);
   VVM_CHECK(std::abs(after / before - 1) < 0.5 * std::abs(after_uniform / before - 1));
   VVM_CHECK(complex_is_valid(local));
   VVM_CHECK(q.min_dihedral_angle > 25 && q.n_min_dihedral_below[2] < q0.n_min_dihedral_below[2] / 10);
