@@ -37,6 +37,7 @@
 #include <CGAL/GSM_mesh_optimization/internal/Angle_penalty.h>
 #include <CGAL/GSM_mesh_optimization/internal/Boundary_fidelity.h>
 #include <CGAL/GSM_mesh_optimization/internal/Edge_split.h>
+#include <CGAL/GSM_mesh_optimization/internal/Vertex_collapse.h>
 #include <CGAL/GSM_mesh_optimization/internal/Energy_guided_flips.h>
 #include <CGAL/GSM_mesh_optimization/internal/Input_mesh_sizing.h>
 #include <CGAL/GSM_mesh_optimization/internal/Vertex_sizes.h>
@@ -911,6 +912,63 @@ void test_edge_split_on_sphere()
   VVM_CHECK_EQUAL(after.number_of_inverted_cells, std::size_t(0));
 }
 
+// vertex removal by edge collapse. Hand-made: the centroid o of a regular tetrahedron
+// (a, b, c, d) has a star of 4 cells; removed into a, the 3 cells with a go and (o, b, c, d)
+// becomes (a, b, c, d), the regular one (70.53 degrees); a hull vertex is never removed. On
+// a make_mesh_3 sphere: each removal takes one interior vertex, leaves the surface as it was
+// and every new cell over the bound asked for, the complex valid with its counters exact.
+void test_vertex_collapse()
+{
+  {
+    Flip_fixture f;
+    Implicit_tr& tr = f.c3t3.triangulation();
+    const Vertex_handle a = insert(tr, 1, 1, 1), b = insert(tr, 1, -1, -1), c = insert(tr, -1, 1, -1),
+                        d = insert(tr, -1, -1, 1), o = insert(tr, 0, 0, 0.01);
+    f.start();
+    for(const Vertex_handle& v : {a, b, c, d}) f.c3t3.set_dimension(v, 2);
+    f.c3t3.set_dimension(o, 3);
+    GSM::internal::Vertex_collapse<Implicit_c3t3> collapses(f.c3t3, f.energy, f.sum, f.count);
+    GSM::internal::Vertex_collapse<Implicit_c3t3>::Collapse k;
+    VVM_CHECK(!collapses.best_collapse(a, 0, k)); // on the surface
+    VVM_CHECK(!collapses.best_collapse(o, 71, k)); // nothing as good as that
+    VVM_CHECK(collapses.best_collapse(o, 70, k));
+    VVM_CHECK_CLOSE(k.angle, std::acos(1. / 3) * 180 / CGAL_PI, 1e-9);
+    collapses.apply(k);
+    VVM_CHECK_EQUAL(tr.number_of_vertices(), std::size_t(4));
+    VVM_CHECK_EQUAL(f.c3t3.number_of_cells_in_complex(), std::size_t(1));
+    VVM_CHECK_EQUAL(f.c3t3.number_of_facets_in_complex(), std::size_t(4));
+    VVM_CHECK(complex_is_valid(f.c3t3) && surface_is_closed(f.c3t3));
+    VVM_CHECK_EQUAL(f.count, std::size_t(1));
+    VVM_CHECK_CLOSE(f.sum, f.energy.total().first, 1e-9 * f.sum);
+  }
+  Sphere_energy_fixture f;
+  Implicit_c3t3& c3t3 = f.c3t3;
+  const std::size_t vertices_before = c3t3.triangulation().number_of_vertices();
+  const std::size_t facets_before = c3t3.number_of_facets_in_complex();
+  std::set<Bare_point> surface_before;
+  for(auto v : c3t3.triangulation().finite_vertex_handles())
+    if(v->in_dimension() < 3) surface_before.insert(v->point().point());
+  const double min_before = GSM::mesh_quality_statistics(c3t3).min_dihedral_angle;
+  GSM::internal::Vertex_collapse<Implicit_c3t3> collapses(c3t3, f.energy, f.sum, f.count);
+  const double least = 25;
+  const std::size_t done = collapses.collapse_vertices(30, least);
+  std::cerr << "    sphere vertex removals: " << done << " (new cells over " << least << " degrees)\n";
+  VVM_CHECK(done > 0 && done <= 30);
+  VVM_CHECK_EQUAL(c3t3.triangulation().number_of_vertices(), vertices_before - done);
+  VVM_CHECK(complex_is_valid(c3t3) && surface_is_closed(c3t3));
+  VVM_CHECK_EQUAL(c3t3.number_of_facets_in_complex(), facets_before);
+  std::set<Bare_point> surface_after;
+  for(auto v : c3t3.triangulation().finite_vertex_handles())
+    if(v->in_dimension() < 3) surface_after.insert(v->point().point());
+  VVM_CHECK(surface_after == surface_before);
+  const auto total = f.energy.total();
+  VVM_CHECK_EQUAL(f.count, total.second);
+  VVM_CHECK_CLOSE(f.sum, total.first, 1e-9 * total.first);
+  const GSM::Mesh_quality_statistics after = GSM::mesh_quality_statistics(c3t3);
+  VVM_CHECK(after.min_dihedral_angle >= (std::min)(min_before, least) - 1e-9);
+  VVM_CHECK_EQUAL(after.number_of_inverted_cells, std::size_t(0));
+}
+
 void test_bad_input()
 {
   const Implicit_domain domain = sphere_domain();
@@ -1516,6 +1574,7 @@ int main()
   test_multi_face_removal();
   test_flip_pass_on_sphere();
   test_edge_split_on_sphere();
+  test_vertex_collapse();
   test_sphere_run();
   test_bad_input();
   test_cube_with_features();

@@ -48,6 +48,7 @@ struct Round_report
   std::size_t number_of_moves = 0; ///< vertices moved in this round
   std::size_t number_of_flips = 0; ///< flips done in this round (in polishing: edge removals and boundary peels)
   std::size_t number_of_splits = 0; ///< edges split in this round (new vertices)
+  std::size_t number_of_removals = 0; ///< vertices removed in this round
   /// a round of the final polishing, which lifts the worst cells and may raise the energy
   bool is_polishing = false;
   double elapsed_time = 0;   ///< seconds since the start
@@ -212,7 +213,8 @@ private:
               const CGAL::Real_timer& timer)
   {
     Edge_split<C3T3> splits(c3t3_, energy_, sum, count, Angle_penalty::for_bound(options_.sliver_bound));
-    Sliver_polisher<C3T3, MeshDomain> polisher(c3t3_, energy_, smoother_, flips, splits, options_.sliver_bound,
+    Vertex_collapse<C3T3> collapses(c3t3_, energy_, sum, count);
+    Sliver_polisher<C3T3, MeshDomain> polisher(c3t3_, energy_, smoother_, flips, splits, collapses, options_.sliver_bound,
                                                options_.do_split, options_.freeze_boundary,
                                                options_.shortest_moves);
     Worst_cells_progress progress(energy_, options_.sliver_bound, polishing_angle_gain, polishing_count_share);
@@ -224,9 +226,10 @@ private:
       report.is_polishing = true;
       report.number_of_moves = done.moves;
       report.number_of_splits = done.splits;
+      report.number_of_removals = done.removals;
       report.number_of_flips = done.flips + done.peels;
       notify_polishing(report, start, sum, count, timer);
-      if(done.moves == 0 && done.flips == 0 && done.peels == 0 && done.splits == 0) break;
+      if(done.moves == 0 && done.flips == 0 && done.peels == 0 && done.splits == 0 && done.removals == 0) break;
       if(progress.stalled()) break;
     }
     // then the mean-angle moves, if asked for (see `Sliver_polisher::raise_mean_pass()`)
@@ -265,7 +268,7 @@ private:
                 << ": mean energy " << report.energy << ", min dihedral " << report.min_dihedral_angle << ", "
                 << report.number_of_cells_under_bound << " cells under " << bound() << ", "
                 << report.number_of_moves << " moves, " << report.number_of_flips << " flips, "
-                << report.number_of_splits << " splits, " << report.elapsed_time << " s (smoothing "
+                << report.number_of_splits << " splits, " << report.number_of_removals << " removals, " << report.elapsed_time << " s (smoothing "
                 << smoothing_time << " s, flips " << flip_time << " s)\n";
     if(options_.visitor) options_.visitor(report);
   }

@@ -81,6 +81,11 @@ public:
   {
     if(sizing_) sizing_->update(v, position(v));
   }
+  /// `v` is about to be removed from the triangulation
+  void vertex_removed(const Vertex_handle& v) const
+  {
+    if(sizing_) sizing_->erase(v);
+  }
   Shape_matching_energy energy_kind() const { return energy_; }
 
   /// energy of the tetrahedron with these corners, mapped by B at its centroid

@@ -72,6 +72,9 @@ public:
       size_.emplace(v, s);
   }
 
+  /// `v` is about to be removed from the triangulation
+  void erase(const Vertex_handle& v) { size_.erase(v); }
+
 private:
   std::function<double(const Eigen::Vector3d&)> field_;
   std::unordered_map<Vertex_handle, double> size_;
