@@ -219,7 +219,9 @@ gsm_optimize(C3T3& c3t3, const MeshDomain* domain, bool boundary_fixed, const Na
  * not trade its bulk for them. If that is not enough, one interior edge of a cell
  * is split by a new interior vertex when that raises the smallest angle around
  * the edge (and, for the cells that are not the worst, lowers the penalty), adding
- * at most 3% of the vertex count. Polishing trades a little energy (the new
+ * at most 3% of the vertex count; past that, interior vertices whose removal (an
+ * edge collapse) leaves only cells 5 degrees over the bound are removed, each paying
+ * for one more split (at most 3% of the vertex count). Polishing trades a little energy (the new
  * cells are smaller than the target) for the worst angles; `split_edges(false)`
  * keeps the vertex set, `sliver_bound(0)` skips the stage. Its passes stop when
  * two in a row have neither raised the smallest angle by half a degree nor
@@ -295,7 +297,9 @@ gsm_optimize(C3T3& c3t3, const MeshDomain* domain, bool boundary_fixed, const Na
  *   \cgalParamNEnd
  *   \cgalParamNBegin{GSM_mesh_optimization::parameters::split_edges}
  *     \cgalParamDescription{whether the polishing may split interior edges of the cells under the
- *       sliver bound, adding interior vertices (at most 3% of the vertex count)}
+ *       sliver bound, adding interior vertices (at most 3% of the vertex count net: past that,
+ *       interior vertices where the cells stay good are removed to pay for more); `false`
+ *       keeps the vertex set}
  *     \cgalParamType{bool}
  *     \cgalParamDefault{true}
  *   \cgalParamNEnd
