@@ -37,6 +37,7 @@
 #include <CGAL/GSM_mesh_optimization/internal/Angle_penalty.h>
 #include <CGAL/GSM_mesh_optimization/internal/Boundary_fidelity.h>
 #include <CGAL/GSM_mesh_optimization/internal/Edge_split.h>
+#include <CGAL/GSM_mesh_optimization/internal/Surface_edge_split.h>
 #include <CGAL/GSM_mesh_optimization/internal/Vertex_collapse.h>
 #include <CGAL/GSM_mesh_optimization/internal/Energy_guided_flips.h>
 #include <CGAL/GSM_mesh_optimization/internal/Input_mesh_sizing.h>
@@ -969,6 +970,64 @@ void test_vertex_collapse()
   VVM_CHECK_EQUAL(after.number_of_inverted_cells, std::size_t(0));
 }
 
+// surface edge splits on a make_mesh_3 sphere's cells under 30 degrees: each new vertex lies on
+// the sphere, on the edge's patch, with two more surface facets; the surface stays closed, the
+// complex valid (outside cells too), the counters and the running sum exact, and the smallest
+// angle of the mesh never lower
+void test_surface_edge_split()
+{
+  const Implicit_domain domain = sphere_domain();
+  Sphere_energy_fixture f;
+  Implicit_c3t3& c3t3 = f.c3t3;
+  typedef GSM::internal::Vertex_smoother<Implicit_c3t3, Implicit_domain> Smoother;
+  const Smoother smoother(c3t3, &domain, f.energy, false);
+  GSM::internal::Surface_edge_split<Implicit_c3t3, Implicit_domain> splits(
+      c3t3, f.energy, f.sum, f.count, smoother, GSM::internal::Angle_penalty::for_bound(30));
+  std::set<Vertex_handle> old_vertices;
+  for(auto v : c3t3.triangulation().finite_vertex_handles()) old_vertices.insert(v);
+  const std::size_t facets_before = c3t3.number_of_facets_in_complex();
+  const double min_before = GSM::mesh_quality_statistics(c3t3).min_dihedral_angle;
+  std::vector<std::array<Vertex_handle, 4>> bad;
+  for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c)
+    if(f.energy.min_dihedral_angle(c) < 30) bad.push_back({{c->vertex(0), c->vertex(1), c->vertex(2), c->vertex(3)}});
+  std::size_t done = 0;
+  for(const auto& t : bad) {
+    Implicit_tr::Cell_handle c;
+    int i, j, k, l;
+    if(c3t3.triangulation().is_cell(t[0], t[1], t[2], t[3], c, i, j, k, l) && splits.try_split_cell(c)) ++done;
+  }
+  std::cerr << "    sphere surface edge splits: " << done << " of " << bad.size() << " cells under 30 degrees\n";
+  VVM_CHECK(done > 0);
+  VVM_CHECK_EQUAL(c3t3.triangulation().number_of_vertices(), old_vertices.size() + done);
+  VVM_CHECK_EQUAL(c3t3.number_of_facets_in_complex(), facets_before + 2 * done);
+  VVM_CHECK(complex_is_valid(c3t3) && surface_is_closed(c3t3)); // every finite cell positive, outside ones too
+  std::size_t new_vertices = 0;
+  for(auto v : c3t3.triangulation().finite_vertex_handles()) {
+    if(old_vertices.count(v) > 0) continue;
+    ++new_vertices;
+    const auto& p = v->point().point();
+    VVM_CHECK_EQUAL(c3t3.in_dimension(v), 2);
+    VVM_CHECK_CLOSE(std::sqrt(p.x() * p.x() + p.y() * p.y() + p.z() * p.z()), 1., 1e-6);
+    // it is on the surface of the complex, on the patch of its facets
+    std::vector<Implicit_tr::Facet> facets;
+    c3t3.triangulation().finite_incident_facets(v, std::back_inserter(facets));
+    std::size_t on_surface = 0;
+    for(const auto& g : facets)
+      if(c3t3.is_in_complex(g)) {
+        ++on_surface;
+        VVM_CHECK(c3t3.surface_patch_index(g) == boost::get<Implicit_c3t3::Surface_patch_index>(c3t3.index(v)));
+      }
+    VVM_CHECK_EQUAL(on_surface, std::size_t(4));
+  }
+  VVM_CHECK_EQUAL(new_vertices, done);
+  const auto total = f.energy.total();
+  VVM_CHECK_EQUAL(f.count, total.second);
+  VVM_CHECK_CLOSE(f.sum, total.first, 1e-9 * total.first);
+  const GSM::Mesh_quality_statistics after = GSM::mesh_quality_statistics(c3t3);
+  VVM_CHECK(after.min_dihedral_angle >= min_before - 1e-9);
+  VVM_CHECK_EQUAL(after.number_of_inverted_cells, std::size_t(0));
+}
+
 void test_bad_input()
 {
   const Implicit_domain domain = sphere_domain();
@@ -1575,6 +1634,7 @@ int main()
   test_flip_pass_on_sphere();
   test_edge_split_on_sphere();
   test_vertex_collapse();
+  test_surface_edge_split();
   test_sphere_run();
   test_bad_input();
   test_cube_with_features();

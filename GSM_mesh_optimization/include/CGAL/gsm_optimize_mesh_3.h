@@ -218,8 +218,9 @@ gsm_optimize(C3T3& c3t3, const MeshDomain* domain, bool boundary_fixed, const Na
  * steeply graded or thin-walled mesh with thousands of cells under the bound does
  * not trade its bulk for them. If that is not enough, one interior edge of a cell
  * is split by a new interior vertex when that raises the smallest angle around
- * the edge (and, for the cells that are not the worst, lowers the penalty), adding
- * at most 3% of the vertex count; past that, interior vertices whose removal (an
+ * the edge (and, for the cells that are not the worst, lowers the penalty), or else
+ * one of its surface edges by a new vertex on the domain's surface (when its
+ * facets stay faithful to it), adding at most 3% of the vertex count; past that, interior vertices whose removal (an
  * edge collapse) leaves only cells 5 degrees over the bound are removed, each paying
  * for one more split (at most 3% of the vertex count). Polishing trades a little energy (the new
  * cells are smaller than the target) for the worst angles; `split_edges(false)`
@@ -297,7 +298,8 @@ gsm_optimize(C3T3& c3t3, const MeshDomain* domain, bool boundary_fixed, const Na
  *   \cgalParamNEnd
  *   \cgalParamNBegin{GSM_mesh_optimization::parameters::split_edges}
  *     \cgalParamDescription{whether the polishing may split interior edges of the cells under the
- *       sliver bound, adding interior vertices (at most 3% of the vertex count net: past that,
+ *       sliver bound, adding interior vertices, and then their surface edges, adding surface
+ *       vertices on the domain's surface (at most 3% of the vertex count net: past that,
  *       interior vertices where the cells stay good are removed to pay for more); `false`
  *       keeps the vertex set}
  *     \cgalParamType{bool}

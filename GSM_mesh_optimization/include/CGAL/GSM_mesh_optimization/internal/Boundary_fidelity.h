@@ -111,6 +111,19 @@ public:
            deviates_at_most(t, patch, fine_grid, coarse_grid, allowed(true));
   }
 
+  /// whether the part `t` of the facet `whole` (of the patch `patch`) strays from the surface
+  /// no further than `whole` does, on both grids, up to the share `slack` (a part's normal
+  /// turns a little: where it keeps the edge of the whole that sets the whole's deviation,
+  /// it measures a hair more than the whole on the same points)
+  bool strays_no_further(const Triangle& t, const Triangle& whole, const Surface_patch_index& patch,
+                         double slack) const
+  {
+    const double coarse = deviation(whole, patch, coarse_grid);
+    if(!deviates_at_most(t, patch, coarse_grid, 0, (1 + slack) * coarse)) return false;
+    const double fine = (std::max)(coarse, deviation(whole, patch, fine_grid, coarse_grid));
+    return deviates_at_most(t, patch, fine_grid, coarse_grid, (1 + slack) * fine);
+  }
+
   /// the largest distance from the points of the grid of `t` with `m` subdivisions (and its
   /// centroid) to the patch `patch` along the normal of `t`, within half its longest edge (far
   /// beyond a chord's sag, short of the far side of thin parts); a point whose normal line meets

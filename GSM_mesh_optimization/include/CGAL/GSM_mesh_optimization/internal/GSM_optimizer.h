@@ -213,8 +213,11 @@ private:
               const CGAL::Real_timer& timer)
   {
     Edge_split<C3T3> splits(c3t3_, energy_, sum, count, Angle_penalty::for_bound(options_.sliver_bound));
+    Surface_edge_split<C3T3, MeshDomain> surface_splits(c3t3_, energy_, sum, count, smoother_,
+                                                        Angle_penalty::for_bound(options_.sliver_bound));
     Vertex_collapse<C3T3> collapses(c3t3_, energy_, sum, count);
-    Sliver_polisher<C3T3, MeshDomain> polisher(c3t3_, energy_, smoother_, flips, splits, collapses, options_.sliver_bound,
+    Sliver_polisher<C3T3, MeshDomain> polisher(c3t3_, energy_, smoother_, flips, splits, surface_splits, collapses,
+                                               options_.sliver_bound,
                                                options_.do_split, options_.freeze_boundary,
                                                options_.shortest_moves);
     Worst_cells_progress progress(energy_, options_.sliver_bound, polishing_angle_gain, polishing_count_share);

@@ -31,6 +31,9 @@
 // - a cell that no move lifts gets an interior edge split (Edge_split.h) when the
 //   smallest angle of the new cells beats that of the old ones, and, unless the
 //   cell is critical, the penalty of the new cells beats that of the old ones;
+//   then a cell still under it gets a surface edge split (Surface_edge_split.h),
+//   the new vertex on the surface, on the same terms; the interior splits come
+//   first, for all the cells, so that the surface ones do not spend their budget;
 //   at most 3% of the vertex count is added;
 // - once that budget is spent, with cells still under the bound, interior
 //   vertices whose removal (Vertex_collapse.h) leaves only cells 5 degrees over
@@ -55,6 +58,7 @@
 #include <CGAL/GSM_mesh_optimization/internal/Angle_penalty.h>
 #include <CGAL/GSM_mesh_optimization/internal/Edge_split.h>
 #include <CGAL/GSM_mesh_optimization/internal/Energy_guided_flips.h>
+#include <CGAL/GSM_mesh_optimization/internal/Surface_edge_split.h>
 #include <CGAL/GSM_mesh_optimization/internal/Vertex_collapse.h>
 #include <CGAL/GSM_mesh_optimization/internal/Vertex_smoother.h>
 
@@ -88,10 +92,11 @@ public:
 
   /// `bound`: the smallest dihedral angle sought, in degrees
   Sliver_polisher(C3T3& c3t3, const Energy& energy, const Smoother& smoother, Energy_guided_flips<C3T3>& flips,
-                  Edge_split<C3T3>& splits, Vertex_collapse<C3T3>& collapses, double bound, bool do_split,
+                  Edge_split<C3T3>& splits, Surface_edge_split<C3T3, MeshDomain>& surface_splits,
+                  Vertex_collapse<C3T3>& collapses, double bound, bool do_split,
                   bool boundary_fixed, bool shortest_moves)
     : c3t3_(c3t3), tr_(c3t3.triangulation()), energy_(energy), smoother_(smoother), flips_(flips), splits_(splits),
-      collapses_(collapses),
+      surface_splits_(surface_splits), collapses_(collapses),
       bound_(bound), penalty_(Angle_penalty::for_bound(bound)), do_split_(do_split), boundary_fixed_(boundary_fixed),
       shortest_moves_(shortest_moves),
       split_budget_(std::size_t(max_split_fraction * double(c3t3.triangulation().number_of_vertices()))),
@@ -156,6 +161,18 @@ public:
       int i, j, k, l;
       if(split_budget_ == 0) break;
       if(tr_.is_cell(t[0], t[1], t[2], t[3], c, i, j, k, l) && splits_.try_split_cell(c)) {
+        ++done.splits;
+        --split_budget_;
+      }
+    }
+    if(boundary_fixed_) return done;
+    for(const auto& b : bad_cells()) {
+      if(stop()) return done;
+      Cell_handle c;
+      const auto& t = b.second;
+      int i, j, k, l;
+      if(split_budget_ == 0) break;
+      if(tr_.is_cell(t[0], t[1], t[2], t[3], c, i, j, k, l) && surface_splits_.try_split_cell(c)) {
         ++done.splits;
         --split_budget_;
       }
@@ -267,6 +284,7 @@ private:
         (std::max)(std::size_t(1), std::size_t(max_critical_share * double(c3t3_.number_of_cells_in_complex())));
     penalty_.critical = bad.size() > k ? std::nextafter(bad[k - 1].first, 180.) : bound_;
     splits_.set_penalty(penalty_);
+    surface_splits_.set_penalty(penalty_);
   }
 
   // the cells in the complex under the bound, worst first, with their vertices
@@ -405,6 +423,7 @@ private:
   const Smoother& smoother_;
   Energy_guided_flips<C3T3>& flips_;
   Edge_split<C3T3>& splits_;
+  Surface_edge_split<C3T3, MeshDomain>& surface_splits_;
   Vertex_collapse<C3T3>& collapses_;
   double bound_;
   Angle_penalty penalty_;

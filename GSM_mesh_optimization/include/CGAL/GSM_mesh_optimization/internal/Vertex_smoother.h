@@ -311,6 +311,39 @@ public:
     return d;
   }
 
+  /// a point where the segment `s` meets the domain's surface, if it lies on the patch `patch`
+  bool project_on_patch(const Segment_3& s, const Surface_patch_index& patch, Bare_point& p) const
+  {
+    if constexpr(std::is_void<MeshDomain>::value) {
+      CGAL_USE(s);
+      CGAL_USE(patch);
+      CGAL_USE(p);
+      return false;
+    } else {
+      const typename MeshDomain::Intersection i = domain_->construct_intersection_object()(s);
+      if(std::get<2>(i) != 2) return false;
+      if(!(domain_->surface_patch_index(std::get<1>(i)) == patch)) return false;
+      p = std::get<0>(i);
+      return true;
+    }
+  }
+
+  /// the triangle `t`, a part of the surface facet `whole` of the patch `patch` (whose vertices
+  /// are `v`), strays no further from the surface than the boundary may, or than `whole` does
+  /// (up to a hundredth of it)
+  bool is_faithful_part(const std::array<Bare_point, 3>& t, const std::array<Bare_point, 3>& whole,
+                        const Surface_patch_index& patch, const std::array<Vertex_handle, 3>& v) const
+  {
+    if constexpr(std::is_void<MeshDomain>::value) {
+      CGAL_USE(t);
+      CGAL_USE(whole);
+      CGAL_USE(patch);
+      CGAL_USE(v);
+      return false;
+    } else
+      return fidelity_ && (fidelity_->is_faithful(t, patch, v) || fidelity_->strays_no_further(t, whole, patch, 0.01));
+  }
+
   /// the facets of a boundary vertex at `p` stray no further from the surface than the initial ones
   bool keeps_boundary_faithful(const Ring& r, const Bare_point& p) const
   {
@@ -414,12 +447,7 @@ private:
     const double h = (std::min)(r.max_neighbor_distance,
                                 (Energy::to_eigen(p) - energy_.position(r.v)).norm());
     const Vector_3 n(r.normal[0] * h, r.normal[1] * h, r.normal[2] * h);
-    const Segment_3 s(p - n, p + n);
-    const typename MeshDomain::Intersection i = domain_->construct_intersection_object()(s);
-    if(std::get<2>(i) != 2) return false;
-    if(!(domain_->surface_patch_index(std::get<1>(i)) == r.patch)) return false;
-    p = std::get<0>(i);
-    return true;
+    return project_on_patch(Segment_3(p - n, p + n), r.patch, p);
   }
 
   // --- feature-curve vertices -------------------------------------------------
