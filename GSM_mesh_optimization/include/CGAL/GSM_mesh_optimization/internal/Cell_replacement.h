@@ -64,6 +64,15 @@ protected:
     return tr_.geom_traits().orientation_3_object()(bare(a), bare(b), bare(c), bare(d));
   }
 
+  // the cell `c` with its vertex `replaced` at `p` is positively oriented (exact)
+  bool is_positive_with(const Cell_handle& c, const Vertex_handle& replaced,
+                        const typename Tr::Geom_traits::Point_3& p) const
+  {
+    typename Tr::Geom_traits::Point_3 q[4];
+    for(int i = 0; i < 4; ++i) q[i] = c->vertex(i) == replaced ? p : bare(c->vertex(i));
+    return tr_.geom_traits().orientation_3_object()(q[0], q[1], q[2], q[3]) == CGAL::POSITIVE;
+  }
+
   // number of cells around `e`, counted up to `cap`
   std::size_t edge_degree(const Edge& e, std::size_t cap) const
   {

@@ -244,13 +244,9 @@ private:
     return false;
   }
 
-  // cell `c` with its vertex `replaced` at `x` is positively oriented (exact)
   bool is_positive(const Cell_handle& c, const Vertex_handle& replaced, const Eigen::Vector3d& x) const
   {
-    Bare_point p[4];
-    for(int i = 0; i < 4; ++i)
-      p[i] = c->vertex(i) == replaced ? Bare_point(x[0], x[1], x[2]) : this->bare(c->vertex(i));
-    return tr_.geom_traits().orientation_3_object()(p[0], p[1], p[2], p[3]) == CGAL::POSITIVE;
+    return this->is_positive_with(c, replaced, Bare_point(x[0], x[1], x[2]));
   }
 
   Angle_penalty penalty_;

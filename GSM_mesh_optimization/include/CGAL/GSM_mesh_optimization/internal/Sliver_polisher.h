@@ -130,21 +130,12 @@ public:
         ++done.moves;
       }
     }
-    for(const auto& b : bad_cells()) {
-      if(stop()) return done;
-      Cell_handle c; // removals replace cells: skip those gone
-      const auto& t = b.second;
-      int i, j, k, l;
-      if(tr_.is_cell(t[0], t[1], t[2], t[3], c, i, j, k, l) && remove_an_edge(t)) ++done.flips;
-    }
-    if(!boundary_fixed_)
-      for(const auto& b : bad_cells()) {
-        if(stop()) return done;
-        Cell_handle c;
-        const auto& t = b.second;
-        int i, j, k, l;
-        if(tr_.is_cell(t[0], t[1], t[2], t[3], c, i, j, k, l) && peel(c)) ++done.peels;
-      }
+    if(!change_bad_cells([&](const Cell_handle&, const Cell_vertices& t) { return remove_an_edge(t); }, stop,
+                         done.flips))
+      return done;
+    if(!boundary_fixed_ &&
+       !change_bad_cells([&](const Cell_handle& c, const Cell_vertices&) { return peel(c); }, stop, done.peels))
+      return done;
     if(!do_split_) return done;
     // the vertex budget is spent: vertices whose removal leaves good cells pay for more splits
     if(split_budget_ == 0 && removal_budget_ > 0) {
@@ -154,29 +145,14 @@ public:
       removal_budget_ -= n;
       split_budget_ += n;
     }
-    for(const auto& b : bad_cells()) {
-      if(stop()) return done;
-      Cell_handle c; // splits replace cells: find each again
-      const auto& t = b.second;
-      int i, j, k, l;
-      if(split_budget_ == 0) break;
-      if(tr_.is_cell(t[0], t[1], t[2], t[3], c, i, j, k, l) && splits_.try_split_cell(c)) {
-        ++done.splits;
-        --split_budget_;
-      }
-    }
-    if(boundary_fixed_) return done;
-    for(const auto& b : bad_cells()) {
-      if(stop()) return done;
-      Cell_handle c;
-      const auto& t = b.second;
-      int i, j, k, l;
-      if(split_budget_ == 0) break;
-      if(tr_.is_cell(t[0], t[1], t[2], t[3], c, i, j, k, l) && surface_splits_.try_split_cell(c)) {
-        ++done.splits;
-        --split_budget_;
-      }
-    }
+    // interior splits first, for all the cells: surface splits in the same loop spent the
+    // budget the interior splits and removals needed (turbine at 10k: 552 -> 596 tets under 20)
+    if(!change_bad_cells([&](const Cell_handle& c, const Cell_vertices&) { return split(splits_, c); }, stop,
+                         done.splits))
+      return done;
+    if(!boundary_fixed_)
+      change_bad_cells([&](const Cell_handle& c, const Cell_vertices&) { return split(surface_splits_, c); }, stop,
+                       done.splits);
     return done;
   }
 
@@ -206,6 +182,33 @@ public:
   }
 
 private:
+  typedef std::array<Vertex_handle, 4> Cell_vertices;
+
+  // calls `change(c, vertices)` on each cell under the bound (worst first) that is still
+  // there, changes replacing cells, and counts in `changed` those it says it changed; false
+  // if `stop()` ended it
+  template <class Change, class Stop>
+  bool change_bad_cells(const Change& change, const Stop& stop, std::size_t& changed)
+  {
+    for(const auto& b : bad_cells()) {
+      if(stop()) return false;
+      Cell_handle c;
+      const Cell_vertices& t = b.second;
+      int i, j, k, l;
+      if(tr_.is_cell(t[0], t[1], t[2], t[3], c, i, j, k, l) && change(c, t)) ++changed;
+    }
+    return true;
+  }
+
+  // a split of the cell `c` by `splits`, if the budget allows it
+  template <class Splits>
+  bool split(Splits& splits, const Cell_handle& c)
+  {
+    if(split_budget_ == 0 || !splits.try_split_cell(c)) return false;
+    --split_budget_;
+    return true;
+  }
+
   // the sum of the smallest angles of the star of the vertex of `r` placed at `x`
   double star_sum(const Ring& r, const Eigen::Vector3d& x) const
   {

@@ -200,10 +200,10 @@ private:
     for(const Cell_handle& c : s.ring)
       if(!tr_.is_infinite(c) && !c3t3_.is_in_complex(c))
         for(const Vertex_handle& replaced : {s.a, s.b})
-          if(!is_positive(c, replaced, p)) return 0;
+          if(!this->is_positive_with(c, replaced, p)) return 0;
     double q = 180;
     for_each_new_complex_cell(s, p, [&](const Cell_handle& c, const Vertex_handle& replaced, const Eigen::Vector3d& x) {
-      if(!is_positive(c, replaced, p)) q = 0;
+      if(!this->is_positive_with(c, replaced, p)) q = 0;
       else q = (std::min)(q, energy_.min_dihedral_angle(c, replaced, x));
     });
     return q;
@@ -239,14 +239,6 @@ private:
     return false;
   }
 
-  // cell `c` with its vertex `replaced` at `p` is positively oriented (exact)
-  bool is_positive(const Cell_handle& c, const Vertex_handle& replaced, const Bare_point& p) const
-  {
-    Bare_point q[4];
-    for(int i = 0; i < 4; ++i) q[i] = c->vertex(i) == replaced ? p : this->bare(c->vertex(i));
-    return tr_.geom_traits().orientation_3_object()(q[0], q[1], q[2], q[3]) == CGAL::POSITIVE;
-  }
-
   // every new finite cell is positive, and the convex hull stays convex: each new hull
   // facet has its interior witness strictly inside and the hull vertices across its
   // edges inside or on its plane (as Vertex_smoother::is_valid_position())
@@ -256,7 +248,7 @@ private:
     for(const Cell_handle& c : s.ring) {
       if(tr_.is_infinite(c)) continue;
       for(const Vertex_handle& replaced : {s.a, s.b})
-        if(!is_positive(c, replaced, p)) return false;
+        if(!this->is_positive_with(c, replaced, p)) return false;
     }
     // the hull vertices next to the edge (a, b) through its infinite cells
     std::vector<Vertex_handle> hull;
