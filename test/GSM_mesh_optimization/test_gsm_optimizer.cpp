@@ -1178,6 +1178,57 @@ void test_boundary_fidelity_on_a_crease()
   VVM_CHECK(!fidelity.deviates_at_most(t, patch, Fidelity::coarse_grid, 0, 0.));
 }
 
+// Boundary_fidelity's bounds on a make_mesh_3 sphere, whose distance to its inscribed boundary
+// is known: a facet is 1 - |x| from the sphere at its point x nearest the centre (both ways).
+// The estimate of the largest distance reaches it from below; every bound lies between 90% of
+// it and it; a facet pulled towards the centre is refused, the initial ones are kept.
+void test_boundary_fidelity_bounds_on_sphere()
+{
+  const Implicit_c3t3 c3t3 = make_sphere_mesh(0.2);
+  const Implicit_domain domain = sphere_domain();
+  typedef GSM::internal::Boundary_fidelity<Implicit_c3t3, Implicit_domain> Fidelity;
+  const Fidelity fidelity(c3t3, &domain);
+  const Implicit_tr& tr = c3t3.triangulation();
+  double exact = 0;
+  std::vector<std::pair<Fidelity::Triangle, std::array<Vertex_handle, 3>>> facets;
+  for(auto f = c3t3.facets_in_complex_begin(); f != c3t3.facets_in_complex_end(); ++f) {
+    Fidelity::Triangle t;
+    std::array<Vertex_handle, 3> v;
+    for(int k = 0; k < 3; ++k) {
+      v[k] = f->first->vertex((f->second + 1 + k) & 3);
+      t[k] = tr.point(v[k]).point();
+    }
+    exact = (std::max)(exact, 1 - std::sqrt(CGAL::squared_distance(K::Point_3(CGAL::ORIGIN), K::Triangle_3(t[0], t[1], t[2]))));
+    facets.emplace_back(t, v);
+  }
+  const double largest = fidelity.largest_initial_distance();
+  std::printf("  sphere: largest distance %.6f estimated, %.6f exact\n", largest, exact);
+  VVM_CHECK(largest <= exact * (1 + 1e-6));
+  VVM_CHECK(largest >= 0.95 * exact);
+  bool bounds_in_range = true;
+  for(auto v : tr.finite_vertex_handles()) {
+    if(c3t3.in_dimension(v) != 2) continue;
+    for(bool fine : {false, true})
+      bounds_in_range = bounds_in_range && fidelity.bound(v, fine) >= Fidelity::floor_share * largest - 1e-12 &&
+                        fidelity.bound(v, fine) <= largest + 1e-12;
+  }
+  VVM_CHECK(bounds_in_range);
+  const auto patch = c3t3.surface_patch_index(*c3t3.facets_in_complex_begin()); // one patch
+  int under_floor = 0, kept = 0, refused = 0;
+  for(const auto& f : facets) {
+    if(fidelity.deviation(f.first, patch, Fidelity::fine_grid) <= Fidelity::floor_share * largest) {
+      ++under_floor;
+      kept += fidelity.is_faithful(f.first, patch, f.second) ? 1 : 0;
+    }
+    Fidelity::Triangle in = f.first;
+    for(auto& p : in) p = CGAL::ORIGIN + (p - CGAL::ORIGIN) * (1 - 1.2 * exact);
+    refused += fidelity.is_faithful(in, patch, f.second) ? 0 : 1;
+  }
+  VVM_CHECK(under_floor > 0);
+  VVM_CHECK_EQUAL(kept, under_floor);
+  VVM_CHECK_EQUAL(refused, int(facets.size()));
+}
+
 // Parallel sweeps are deterministic: the batches do not depend on the threads.
 // A sizing field matters only up to a constant factor (fitted to the vertex
 // count). The adaptive run follows the field. The boundary does not get
@@ -1639,6 +1690,7 @@ int main()
   test_bad_input();
   test_cube_with_features();
   test_boundary_fidelity_on_a_crease();
+  test_boundary_fidelity_bounds_on_sphere();
   test_threads_fields_and_boundary();
   test_input_mesh_sizing();
   test_several_subdomains();
