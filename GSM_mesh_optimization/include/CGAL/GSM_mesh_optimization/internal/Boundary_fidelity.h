@@ -12,22 +12,23 @@
 // `Construct_intersection` (any domain: polyhedral or implicit). It is larger
 // than the true distances both ways: along the facet's normal the surface is
 // further than along its own, and a point of the surface beside a crease can be
-// closer to the next facet. So the initial deviations, a vertex's bounds before,
-// let the boundary's Hausdorff distance to the surface grow (hand: a facet that
-// measured 0.0102 where the surface was 0.0072 from the boundary; smoothing took
-// that point to 0.0103, the distance up by a third) and held the thin parts of
-// organic models far below it (dino, armadillo: smallest angles under 25
-// degrees). The bounds now come from the largest true distance between the
-// initial boundary and the surface, estimated where the deviations are largest:
-// from a grid point to the surface (the nearest intersection along a cone of
-// directions about the normal) and from the surface's point on its normal to the
-// boundary (an AABB tree of the initial facets). Any facet may deviate 90% of
-// it, or a high quantile of the initial deviations (not their maximum: facets
-// beside feature edges can measure far more than they stray) if that is more;
-// the vertices of a facet that deviated more may let their facets deviate as
-// much, up to the largest distance. A facet may stray as far as the largest
-// bound of its vertices: its deviation is then at most the initial Hausdorff
-// distance, wherever it lies. Where the surface has a crease the domain
+// closer to the next facet. Bounds taken from the initial deviations alone let
+// the boundary's Hausdorff distance to the surface grow where they overstate it
+// (hand: a facet measured 0.0102 where the surface was 0.0072 from the boundary;
+// smoothing took that point to 0.0103, the distance up by a third), and a floor
+// at a quantile of them held the thin parts of organic models (dino, armadillo:
+// smallest angles under 25 degrees). So the bounds come from the largest true
+// distance between the initial boundary and the surface, estimated where the
+// deviations are largest: from a grid point to the surface (the nearest
+// intersection along a cone of directions about the normal) and from the
+// surface's point on its normal to the boundary (an AABB tree of the initial
+// facets). Any facet may deviate 90% of it, or a high quantile of the initial
+// deviations (not their maximum: facets beside feature edges can measure far
+// more than they stray) if that is more; the vertices of a facet that deviated
+// more may let their facets deviate as much, up to the largest distance. A facet
+// may stray as far as the largest bound of its vertices: its deviation is then at
+// most the initial Hausdorff distance (or the quantile), wherever it lies. Where
+// the surface has a crease the domain
 // does not protect, the distance peaks on the crease, between grid points: on a
 // grid with the facet's edges in 4, moves that kept the bounds let the
 // boundary's Hausdorff distance to the surface grow by 16% (dragknob). So the
@@ -275,9 +276,6 @@ private:
   // its normal to the boundary `boundary`; `above` if none is further. The deviation of a
   // point is larger than both: along the facet's normal, the surface is further than along
   // its own normal, and a point of the surface beside a crease can be closer to the next facet
-  // (hand: a grid point at 0.0102 of the surface along the normal of its facet, the surface's
-  // point 0.0072 from the boundary; bounds of 0.0102 let smoothing take that point to 0.0103
-  // of the boundary, the boundary's Hausdorff distance to the surface up by 33%)
   double distance_between(const Initial_facet& e, int m, const Boundary_tree& boundary, double above) const
   {
     double largest = above;
