@@ -9,7 +9,9 @@
 // Splitting the surface edge (a, b) puts a new surface vertex x on the domain's
 // surface: every cell around the edge, inside the complex or not, becomes two,
 // with a, respectively b, replaced by x, and the edge's two surface facets become
-// four. From the edge's midpoint projected onto the surface (along the normal of
+// four. Where x, on a curved surface, lies beyond a facet of an outside cell of
+// the ring (the new cell on it would be inverted), the outside cells beyond are
+// replaced too, by x's star (`hole()`): outside cells are no part of the mesh. From the edge's midpoint projected onto the surface (along the normal of
 // the two facets), x climbs the smallest dihedral angle of the new cells in the
 // complex, in the surface's tangent plane and projected back onto it. The split is
 // kept if that angle beats the smallest one of the old cells by half a degree (and,
@@ -63,6 +65,9 @@ public:
   {}
 
   void set_penalty(const Angle_penalty& penalty) { penalty_ = penalty; }
+
+  /// the number of splits that replaced outside cells beyond the edge's ring (see `hole()`)
+  std::size_t number_of_grown_holes() const { return grown_holes_; }
 
   /// splits the surface edge of the cell `c` whose split gives the largest smallest
   /// dihedral angle, if it beats the one of the cells around the edge (and, unless they
@@ -197,10 +202,8 @@ private:
   // positive (outside cells too: the ascent must stay where the split can be made)
   double quality(const Split& s, const Bare_point& p) const
   {
-    for(const Cell_handle& c : s.ring)
-      if(!tr_.is_infinite(c) && !c3t3_.is_in_complex(c))
-        for(const Vertex_handle& replaced : {s.a, s.b})
-          if(!this->is_positive_with(c, replaced, p)) return 0;
+    std::vector<Cell_handle> cells;
+    if(!hole(s, p, cells)) return 0;
     double q = 180;
     for_each_new_complex_cell(s, p, [&](const Cell_handle& c, const Vertex_handle& replaced, const Eigen::Vector3d& x) {
       if(!this->is_positive_with(c, replaced, p)) q = 0;
@@ -239,6 +242,47 @@ private:
     return false;
   }
 
+  // The cells that the star of a new vertex at `p` replaces: the edge's ring, and the
+  // outside cells beyond any facet of it that `p` sees from behind (the new cell on it would
+  // be inverted), and so on; false if a cell in the complex or an infinite one would have to
+  // go, if a surface facet other than the edge's two would be inside, if a vertex would be
+  // (it would be lost), or past `max_added_cells`. The edge's midpoint projected onto a
+  // curved surface often lies beyond an outside cell's facet (armadillo: the surface edges
+  // of the worst cell, all four of whose vertices lie on the surface, inverted one to four
+  // outside cells each): those cells do not belong to the mesh, and their region takes any
+  // triangulation that fills it.
+  bool hole(const Split& s, const Bare_point& p, std::vector<Cell_handle>& cells) const
+  {
+    cells = s.ring;
+    const auto in_hole = [&cells](const Cell_handle& c) { return std::find(cells.begin(), cells.end(), c) != cells.end(); };
+    for(std::size_t k = 0; k < cells.size(); ++k) {
+      const Cell_handle c = cells[k];
+      if(tr_.is_infinite(c)) continue; // the hull's convexity: is_valid()
+      for(int i = 0; i < 4; ++i) {
+        const Cell_handle n = c->neighbor(i);
+        if(in_hole(n) || this->is_positive_with(c, c->vertex(i), p)) continue;
+        if(tr_.is_infinite(n) || c3t3_.is_in_complex(n) || cells.size() == s.ring.size() + max_added_cells)
+          return false;
+        cells.push_back(n);
+      }
+    }
+    if(cells.size() == s.ring.size()) return true;
+    std::vector<Vertex_handle> on_boundary;
+    for(const Cell_handle& c : cells)
+      for(int i = 0; i < 4; ++i) {
+        const bool inside = in_hole(c->neighbor(i));
+        if(inside && c3t3_.is_in_complex(c, i) && !(c->has_vertex(s.a) && c->has_vertex(s.b) && c->vertex(i) != s.a &&
+                                                   c->vertex(i) != s.b))
+          return false;
+        if(!inside)
+          for(int j = 1; j < 4; ++j) on_boundary.push_back(c->vertex((i + j) & 3));
+      }
+    for(const Cell_handle& c : cells)
+      for(int i = 0; i < 4; ++i)
+        if(std::find(on_boundary.begin(), on_boundary.end(), c->vertex(i)) == on_boundary.end()) return false;
+    return true;
+  }
+
   // every new finite cell is positive, and the convex hull stays convex: each new hull
   // facet has its interior witness strictly inside and the hull vertices across its
   // edges inside or on its plane (as Vertex_smoother::is_valid_position())
@@ -246,10 +290,12 @@ private:
   {
     const auto orient = tr_.geom_traits().orientation_3_object();
     for(const Cell_handle& c : s.ring) {
-      if(tr_.is_infinite(c)) continue;
+      if(tr_.is_infinite(c) || !c3t3_.is_in_complex(c)) continue;
       for(const Vertex_handle& replaced : {s.a, s.b})
         if(!this->is_positive_with(c, replaced, p)) return false;
     }
+    std::vector<Cell_handle> cells;
+    if(!hole(s, p, cells)) return false;
     // the hull vertices next to the edge (a, b) through its infinite cells
     std::vector<Vertex_handle> hull;
     for(const Cell_handle& c : s.ring)
@@ -297,17 +343,20 @@ private:
 
   void apply(const Split& s)
   {
-    // the subdomain of each cell, known by its two vertices off the edge
-    std::vector<std::pair<std::array<Vertex_handle, 2>, Subdomain_index>> subdomains;
+    // the subdomain of each new cell, known by its facet opposite the new vertex: one of the
+    // facets of a ring cell opposite a or b
+    std::vector<std::pair<std::array<Vertex_handle, 3>, Subdomain_index>> subdomains;
     for(const Cell_handle& c : s.ring) {
       if(tr_.is_infinite(c) || !c3t3_.is_in_complex(c)) continue;
-      std::array<Vertex_handle, 2> off;
-      int n = 0;
-      for(int i = 0; i < 4; ++i)
-        if(c->vertex(i) != s.a && c->vertex(i) != s.b) off[n++] = c->vertex(i);
-      subdomains.push_back({off, c3t3_.subdomain_index(c)});
+      for(const Vertex_handle& replaced : {s.a, s.b}) {
+        const int i = c->index(replaced);
+        subdomains.push_back({sorted_facet(c, i), c3t3_.subdomain_index(c)});
+      }
       c3t3_.remove_from_complex(c);
     }
+    std::vector<Cell_handle> cells;
+    hole(s, s.x, cells);
+    if(cells.size() > s.ring.size()) ++grown_holes_;
     for(const Vertex_handle& w : s.apexes) {
       Cell_handle c;
       int i, j, k;
@@ -315,7 +364,11 @@ private:
       c3t3_.remove_from_complex(Facet(c, 6 - i - j - k));
     }
 
-    const Vertex_handle v = tr_.tds().insert_in_edge(s.edge);
+    Facet start;
+    for(const Cell_handle& c : cells)
+      for(int i = 0; i < 4; ++i)
+        if(std::find(cells.begin(), cells.end(), c->neighbor(i)) == cells.end()) start = Facet(c, i);
+    const Vertex_handle v = tr_.tds().insert_in_hole(cells.begin(), cells.end(), start.first, start.second);
     set_bare_point(tr_, v, s.x, true);
     energy_.vertex_moved(v);
     c3t3_.set_dimension(v, 2);
@@ -324,8 +377,9 @@ private:
     tr_.incident_cells(v, std::back_inserter(star));
     for(const Cell_handle& c : star) {
       this->log_vertices(c);
+      const std::array<Vertex_handle, 3> base = sorted_facet(c, c->index(v));
       for(const auto& sd : subdomains)
-        if(c->has_vertex(sd.first[0]) && c->has_vertex(sd.first[1])) c3t3_.add_to_complex(c, sd.second);
+        if(sd.first == base) c3t3_.add_to_complex(c, sd.second);
     }
     // the old facets of the star take their data from the cells beyond; the new ones have none
     this->copy_surface_data(star);
@@ -341,9 +395,19 @@ private:
         c->set_facet_surface_center(l, centre);
         m.first->set_facet_surface_center(m.second, centre);
       }
-    this->account(s.old_sum, s.new_sum, int(subdomains.size()));
+    this->account(s.old_sum, s.new_sum, int(subdomains.size() / 2));
   }
 
+  static std::array<Vertex_handle, 3> sorted_facet(const Cell_handle& c, int i)
+  {
+    std::array<Vertex_handle, 3> f{{c->vertex((i + 1) & 3), c->vertex((i + 2) & 3), c->vertex((i + 3) & 3)}};
+    std::sort(f.begin(), f.end());
+    return f;
+  }
+
+  std::size_t grown_holes_ = 0;
+  /// at most this many outside cells beyond the edge's ring are replaced
+  static constexpr std::size_t max_added_cells = 16;
   static constexpr int ascent_steps = 10;
   static constexpr double min_gain = 0.5; // degrees
   static constexpr int max_backtracking_steps = 10;
