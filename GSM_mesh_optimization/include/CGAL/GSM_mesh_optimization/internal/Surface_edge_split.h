@@ -11,8 +11,9 @@
 // with a, respectively b, replaced by x, and the edge's two surface facets become
 // four. Where x, on a curved surface, lies beyond a facet of an outside cell of
 // the ring (the new cell on it would be inverted), the outside cells beyond are
-// replaced too, by x's star (`hole()`): outside cells are no part of the mesh. From the edge's midpoint projected onto the surface (along the normal of
-// the two facets), x climbs the smallest dihedral angle of the new cells in the
+// replaced too, by x's star (`hole()`): outside cells are no part of the mesh.
+// From the edge's midpoint projected onto the surface (along the normal of the
+// two facets), x climbs the smallest dihedral angle of the new cells in the
 // complex, in the surface's tangent plane and projected back onto it. The split is
 // kept if that angle beats the smallest one of the old cells by half a degree (and,
 // unless the old cells are critical, lowers their angle penalty), every new finite
@@ -246,7 +247,8 @@ private:
   // outside cells beyond any facet of it that `p` sees from behind (the new cell on it would
   // be inverted), and so on; false if a cell in the complex or an infinite one would have to
   // go, if a surface facet other than the edge's two would be inside, if a vertex would be
-  // (it would be lost), or past `max_added_cells`. The edge's midpoint projected onto a
+  // (it would be lost), or past `max_added_cells` (a cell of the complex that the new vertex
+  // would invert is left to the callers: its new cell is not positive). The edge's midpoint projected onto a
   // curved surface often lies beyond an outside cell's facet (armadillo: the surface edges
   // of the worst cell, all four of whose vertices lie on the surface, inverted one to four
   // outside cells each): those cells do not belong to the mesh, and their region takes any
