@@ -1003,32 +1003,31 @@ std::size_t check_surface_edge_splits(const Implicit_function& surface, double s
   for(auto v : c3t3.triangulation().finite_vertex_handles()) old_vertices.insert(v);
   const std::size_t facets_before = c3t3.number_of_facets_in_complex();
   const double min_before = GSM::mesh_quality_statistics(c3t3).min_dihedral_angle;
-  std::vector<std::array<Vertex_handle, 4>> bad;
-  for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c)
-    if(f.energy.min_dihedral_angle(c) < 30) bad.push_back({{c->vertex(0), c->vertex(1), c->vertex(2), c->vertex(3)}});
-  std::size_t done = 0;
-  for(const auto& t : bad) {
-    Implicit_tr::Cell_handle c;
-    int i, j, k, l;
-    if(c3t3.triangulation().is_cell(t[0], t[1], t[2], t[3], c, i, j, k, l) && splits.try_split_cell(c)) ++done;
-  }
-  std::cerr << "    surface edge splits: " << done << " of " << bad.size() << " cells under 30 degrees\n";
+  // tries `s` on each cell under `bound` degrees; the number of splits made and of cells tried
+  const auto split_cells_under = [&](double bound, auto& s) {
+    std::vector<std::array<Vertex_handle, 4>> bad;
+    for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c)
+      if(f.energy.min_dihedral_angle(c) < bound) bad.push_back({{c->vertex(0), c->vertex(1), c->vertex(2), c->vertex(3)}});
+    std::size_t made = 0;
+    for(const auto& t : bad) {
+      Implicit_tr::Cell_handle c;
+      int i, j, k, l;
+      if(c3t3.triangulation().is_cell(t[0], t[1], t[2], t[3], c, i, j, k, l) && s.try_split_cell(c)) ++made;
+    }
+    return std::make_pair(made, bad.size());
+  };
+  const auto under_30 = split_cells_under(30, splits);
+  std::size_t done = under_30.first;
+  std::cerr << "    surface edge splits: " << done << " of " << under_30.second << " cells under 30 degrees\n";
   VVM_CHECK(done > 0);
   // then for the cells under 40, with the bound at 40: more splits, some of which replace
   // outside cells beyond the edge's ring, where the new vertex would invert them
   GSM::internal::Surface_edge_split<Implicit_c3t3, Implicit_domain> splits_40(
       c3t3, f.energy, f.sum, f.count, smoother, GSM::internal::Angle_penalty::for_bound(40));
-  bad.clear();
-  for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c)
-    if(f.energy.min_dihedral_angle(c) < 40) bad.push_back({{c->vertex(0), c->vertex(1), c->vertex(2), c->vertex(3)}});
-  std::size_t done_40 = 0;
-  for(const auto& t : bad) {
-    Implicit_tr::Cell_handle c;
-    int i, j, k, l;
-    if(c3t3.triangulation().is_cell(t[0], t[1], t[2], t[3], c, i, j, k, l) && splits_40.try_split_cell(c)) ++done_40;
-  }
+  const auto under_40 = split_cells_under(40, splits_40);
+  const std::size_t done_40 = under_40.first;
   const std::size_t grown = splits_40.number_of_grown_holes() + splits.number_of_grown_holes();
-  std::cerr << "    surface edge splits: " << done_40 << " of " << bad.size() << " cells under 40 degrees, "
+  std::cerr << "    surface edge splits: " << done_40 << " of " << under_40.second << " cells under 40 degrees, "
             << grown << " in all past the edge's ring\n";
   done += done_40;
   VVM_CHECK_EQUAL(c3t3.triangulation().number_of_vertices(), old_vertices.size() + done);
