@@ -24,6 +24,7 @@
 
 #include <CGAL/GSM_mesh_optimization/internal/Angle_penalty.h>
 #include <CGAL/GSM_mesh_optimization/internal/Cell_replacement.h>
+#include <CGAL/GSM_mesh_optimization/internal/Central_differences.h>
 
 #include <Eigen/Cholesky>
 
@@ -175,13 +176,8 @@ private:
   bool lift(const std::vector<Cell_handle>& ring, const Vertex_handle& a, const Vertex_handle& b,
             double length, Eigen::Vector3d& x, double& q) const
   {
-    const double h = 1e-4 * length;
-    Eigen::Vector3d g;
-    for(int k = 0; k < 3; ++k) {
-      Eigen::Vector3d e = Eigen::Vector3d::Zero();
-      e[k] = h;
-      g[k] = star_quality(ring, a, b, x + e) - star_quality(ring, a, b, x - e);
-    }
+    Eigen::Vector3d g = central_differences([&](const Eigen::Vector3d& y) { return star_quality(ring, a, b, y); },
+                                            x, 1e-4 * length);
     if(!(g.norm() > 0)) return false;
     g.normalize();
     double alpha = 0.1 * length;

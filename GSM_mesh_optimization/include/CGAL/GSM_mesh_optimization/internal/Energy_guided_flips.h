@@ -93,8 +93,7 @@ public:
     std::vector<std::array<Vertex_handle, 2>> edges;
     std::vector<std::array<Vertex_handle, 3>> facets;
     const double threshold = candidate_factor * this->mean();
-    std::vector<Cell_handle> cells = energy_.cells_in_complex();
-    if(around != nullptr) cells.erase(std::remove_if(cells.begin(), cells.end(), [&](const Cell_handle& c) { return !is_near(c); }), cells.end());
+    const std::vector<Cell_handle> cells = around == nullptr ? energy_.cells_in_complex() : cells_near(near);
     const std::vector<double> cell_energy = Energy::per_cell(cells, [this](const Cell_handle& c) { return energy_.cell(c); });
     for(std::size_t n = 0; n < cells.size(); ++n) {
       const Cell_handle& c = cells[n];
@@ -138,10 +137,9 @@ public:
     }
     std::vector<std::array<Vertex_handle, 4>> flat_boundary_cells;
     for(auto c = c3t3_.cells_in_complex_begin(); c != c3t3_.cells_in_complex_end(); ++c) {
-      if(!is_near(c)) continue;
       int surface_facets = 0;
       for(int i = 0; i < 4; ++i) surface_facets += c3t3_.is_in_complex(c, i) ? 1 : 0;
-      if(surface_facets == 2)
+      if(surface_facets == 2 && is_near(c))
         flat_boundary_cells.push_back({{c->vertex(0), c->vertex(1), c->vertex(2), c->vertex(3)}});
     }
     for(const auto& t : flat_boundary_cells) {
@@ -152,6 +150,30 @@ public:
     }
     set_change_log(nullptr);
     return done;
+  }
+
+  // the cells in the complex with two vertices or more in `near`, each once, in no particular
+  // order: gathered from the stars of `near`, not by a scan of the complex (after the first
+  // pass of a round, a few thousand vertices of 100k)
+  std::vector<Cell_handle> cells_near(const std::unordered_set<Vertex_handle>& near) const
+  {
+    std::vector<Cell_handle> cells, star;
+    for(const Vertex_handle& v : near) {
+      star.clear();
+      tr_.incident_cells(v, std::back_inserter(star));
+      for(const Cell_handle& c : star) {
+        if(!c3t3_.is_in_complex(c)) continue;
+        // the cell is taken by its first vertex in `near`, and only if it has a second one
+        int first = -1, n = 0;
+        for(int i = 0; i < 4; ++i)
+          if(near.count(c->vertex(i))) {
+            if(first < 0) first = i;
+            ++n;
+          }
+        if(n >= 2 && c->vertex(first) == v) cells.push_back(c);
+      }
+    }
+    return cells;
   }
 
   /// the vertices of the cells the changes create or peel go to `log` (none: nullptr)

@@ -218,6 +218,28 @@ public:
     return {worst, n};
   }
 
+  /// `total()` and `worst_and_count_under(bound)` in one scan of the complex (each round and
+  /// each polishing pass needs both)
+  struct Summary
+  {
+    std::pair<double, std::size_t> total;
+    std::pair<double, std::size_t> worst_and_count_under;
+  };
+  Summary summary(double bound) const
+  {
+    Summary s{{0., 0}, {180., 0}};
+    const auto cells = per_cell(cells_in_complex(), [this](const Cell_handle& c) {
+      return std::array<double, 2>{{cell(c), min_dihedral_angle(c)}};
+    });
+    for(const auto& e : cells) { // in the complex's order, whatever the threads
+      s.total.first += e[0];
+      s.worst_and_count_under.first = (std::min)(s.worst_and_count_under.first, e[1]);
+      s.worst_and_count_under.second += e[1] < bound ? 1 : 0;
+    }
+    s.total.second = cells.size();
+    return s;
+  }
+
   /// the cells in the complex, in its order
   std::vector<Cell_handle> cells_in_complex() const
   {
@@ -230,9 +252,9 @@ public:
   /// `f(c)` for each of `cells`, computed in parallel (the scans of the whole mesh that the
   /// rounds and the polishing make are most of their time where little moves)
   template <class F>
-  static std::vector<double> per_cell(const std::vector<Cell_handle>& cells, const F& f)
+  static auto per_cell(const std::vector<Cell_handle>& cells, const F& f)
   {
-    std::vector<double> out(cells.size());
+    std::vector<std::decay_t<decltype(f(cells.front()))>> out(cells.size());
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, cells.size(), 1024),
                       [&](const tbb::blocked_range<std::size_t>& r) {
       for(std::size_t i = r.begin(); i != r.end(); ++i) out[i] = f(cells[i]);

@@ -59,6 +59,7 @@
 #define CGAL_GSM_MESH_OPTIMIZATION_INTERNAL_SLIVER_POLISHER_H
 
 #include <CGAL/GSM_mesh_optimization/internal/Angle_penalty.h>
+#include <CGAL/GSM_mesh_optimization/internal/Central_differences.h>
 #include <CGAL/GSM_mesh_optimization/internal/Edge_split.h>
 #include <CGAL/GSM_mesh_optimization/internal/Energy_guided_flips.h>
 #include <CGAL/GSM_mesh_optimization/internal/Least_norm_point_of_hull.h>
@@ -114,7 +115,7 @@ public:
   Counts polish_pass(const Stop& stop)
   {
     Counts done;
-    const auto bad = bad_cells();
+    auto bad = bad_cells();
     set_critical_angle(bad);
     std::vector<std::pair<double, Vertex_handle>> vertices;
     for(const auto& b : bad)
@@ -134,28 +135,37 @@ public:
         ++done.moves;
       }
     }
-    if(!change_bad_cells([&](const Cell_handle&, const Cell_vertices& t) { return remove_an_edge(t); }, stop,
+    // the cells under the bound are scanned for again only after a change: in the last passes
+    // at 100k vertices, with a few moves each, the scans were most of the time
+    const auto rescan_if = [&](bool changed) {
+      if(changed) bad = bad_cells();
+    };
+    rescan_if(done.moves > 0);
+    if(!change_bad_cells(bad, [&](const Cell_handle&, const Cell_vertices& t) { return remove_an_edge(t); }, stop,
                          done.flips))
       return done;
+    rescan_if(done.flips > 0);
     if(!boundary_fixed_ &&
-       !change_bad_cells([&](const Cell_handle& c, const Cell_vertices&) { return peel(c); }, stop, done.peels))
+       !change_bad_cells(bad, [&](const Cell_handle& c, const Cell_vertices&) { return peel(c); }, stop, done.peels))
       return done;
+    rescan_if(done.peels > 0);
     if(!do_split_) return done;
     // the vertex budget is spent: vertices whose removal leaves good cells pay for more splits
     if(split_budget_ == 0 && removal_budget_ > 0) {
-      const std::size_t n =
-          collapses_.collapse_vertices((std::min)(bad_cells().size(), removal_budget_), bound_ + removal_margin);
+      const std::size_t n = collapses_.collapse_vertices((std::min)(bad.size(), removal_budget_), bound_ + removal_margin);
       done.removals = n;
       removal_budget_ -= n;
       split_budget_ += n;
+      rescan_if(n > 0);
     }
     // interior splits first, for all the cells: surface splits in the same loop spent the
     // budget the interior splits and removals needed (turbine at 10k: 552 -> 596 tets under 20)
-    if(!change_bad_cells([&](const Cell_handle& c, const Cell_vertices&) { return split(splits_, c); }, stop,
+    if(!change_bad_cells(bad, [&](const Cell_handle& c, const Cell_vertices&) { return split(splits_, c); }, stop,
                          done.splits))
       return done;
+    rescan_if(done.splits > 0);
     if(!boundary_fixed_)
-      change_bad_cells([&](const Cell_handle& c, const Cell_vertices&) { return split(surface_splits_, c); }, stop,
+      change_bad_cells(bad, [&](const Cell_handle& c, const Cell_vertices&) { return split(surface_splits_, c); }, stop,
                        done.splits);
     return done;
   }
@@ -188,13 +198,14 @@ public:
 private:
   typedef std::array<Vertex_handle, 4> Cell_vertices;
 
-  // calls `change(c, vertices)` on each cell under the bound (worst first) that is still
-  // there, changes replacing cells, and counts in `changed` those it says it changed; false
-  // if `stop()` ended it
+  // calls `change(c, vertices)` on each cell of `bad` (the cells under the bound, worst first)
+  // that is still there, changes replacing cells, and counts in `changed` those it says it
+  // changed; false if `stop()` ended it
   template <class Change, class Stop>
-  bool change_bad_cells(const Change& change, const Stop& stop, std::size_t& changed)
+  bool change_bad_cells(const std::vector<std::pair<double, Cell_vertices>>& bad, const Change& change,
+                        const Stop& stop, std::size_t& changed)
   {
-    for(const auto& b : bad_cells()) {
+    for(const auto& b : bad) {
       if(stop()) return false;
       Cell_handle c;
       const Cell_vertices& t = b.second;
@@ -213,12 +224,29 @@ private:
     return true;
   }
 
-  // the sum of the smallest angles of the star of the vertex of `r` placed at `x`
-  double star_sum(const Ring& r, const Eigen::Vector3d& x) const
+  // what the moves of the vertex of `r` weigh of its star's smallest angles at a position
+  struct Star_angles
   {
-    double s = 0;
-    for(const Cell_handle& c : r.complex_cells) s += energy_.min_dihedral_angle(c, r.v, x);
-    return s;
+    double worst = 180;   // the smallest
+    double sum = 0;
+    double penalty = 0;   // `penalty_` summed
+    std::size_t under_bound = 0, under_guard = 0; // under the bound, under the bound + `guard_margin`
+  };
+
+  // the star's angles with the vertex of `r` placed at `x`, in one pass over its cells (a
+  // backtracking step weighs several of these, and the angles are most of its cost)
+  Star_angles star_angles(const Ring& r, const Eigen::Vector3d& x) const
+  {
+    Star_angles a;
+    for(const Cell_handle& c : r.complex_cells) {
+      const double q = energy_.min_dihedral_angle(c, r.v, x);
+      a.worst = (std::min)(a.worst, q);
+      a.sum += q;
+      a.penalty += penalty_(q);
+      if(q < bound_) ++a.under_bound;
+      if(q < bound_ + guard_margin) ++a.under_guard;
+    }
+    return a;
   }
 
   // the unit direction `d` in which `score` of the vertex of `r` rises fastest from `x0`, within
@@ -227,14 +255,7 @@ private:
   template <class Score>
   bool ascent_direction(const Ring& r, const Eigen::Vector3d& x0, const Score& score, Eigen::Vector3d& d) const
   {
-    const double h = 1e-4 * r.max_neighbor_distance;
-    Eigen::Vector3d g;
-    for(int k = 0; k < 3; ++k) {
-      Eigen::Vector3d e = Eigen::Vector3d::Zero();
-      e[k] = h;
-      g[k] = score(x0 + e) - score(x0 - e);
-    }
-    d = smoother_.tangential(r, g);
+    d = smoother_.tangential(r, central_differences(score, x0, 1e-4 * r.max_neighbor_distance));
     const double n = d.norm();
     if(!(n > 0) || !std::isfinite(n)) return false;
     d /= n;
@@ -254,13 +275,8 @@ private:
     std::vector<Eigen::Vector3d> gradients;
     for(const Cell_handle& c : r.complex_cells) {
       if(!(energy_.min_dihedral_angle(c, r.v, x0) < q0 + active_margin)) continue;
-      Eigen::Vector3d g;
-      for(int k = 0; k < 3; ++k) {
-        Eigen::Vector3d e = Eigen::Vector3d::Zero();
-        e[k] = h;
-        g[k] = (energy_.min_dihedral_angle(c, r.v, x0 + e) - energy_.min_dihedral_angle(c, r.v, x0 - e)) / (2 * h);
-      }
-      gradients.push_back(smoother_.tangential(r, g));
+      const auto angle = [&](const Eigen::Vector3d& x) { return energy_.min_dihedral_angle(c, r.v, x); };
+      gradients.push_back(smoother_.tangential(r, central_differences(angle, x0, h) / (2 * h)));
     }
     if(gradients.empty()) return false;
     const Eigen::Vector3d z = least_norm_point_of_hull(gradients);
@@ -275,19 +291,20 @@ private:
   bool raise_mean(const Ring& r) const
   {
     const Eigen::Vector3d x0 = energy_.position(r.v);
-    const auto objective = [&](const Eigen::Vector3d& x) { return star_sum(r, x) - smoother_.move_cost(r.v, x); };
-    const double s0 = objective(x0);
-    const double floor = (std::min)(star_quality(r, x0), bound_);
-    const double guard = bound_ + guard_margin;
-    const std::size_t under = count_under(r, x0, guard);
+    const auto objective = [&](const Eigen::Vector3d& x, const Star_angles& a) { return a.sum - smoother_.move_cost(r.v, x); };
+    const Star_angles a0 = star_angles(r, x0);
+    const double s0 = objective(x0, a0);
+    const double floor = (std::min)(a0.worst, bound_);
     Eigen::Vector3d d;
-    if(!ascent_direction(r, x0, objective, d)) return false;
+    if(!ascent_direction(r, x0, [&](const Eigen::Vector3d& x) { return objective(x, star_angles(r, x)); }, d))
+      return false;
     double alpha = 0.2 * r.max_neighbor_distance;
     for(int k = 0; k < max_backtracking_steps; ++k, alpha *= 0.5) {
       Bare_point p;
       if(!smoother_.candidate(r, x0 + alpha * d, p) || !smoother_.is_valid_position(r, p)) continue;
       const Eigen::Vector3d x = Energy::to_eigen(p);
-      if(objective(x) > s0 + 1e-3 && star_quality(r, x) >= floor && count_under(r, x, guard) <= under &&
+      const Star_angles a = star_angles(r, x);
+      if(objective(x, a) > s0 + 1e-3 && a.worst >= floor && a.under_guard <= a0.under_guard &&
          smoother_.keeps_boundary_faithful(r, p)) {
         smoother_.move(r.v, p);
         return true;
@@ -374,59 +391,37 @@ private:
     });
   }
 
-  // smallest dihedral angle of the star of the vertex of `r` placed at `x`
-  double star_quality(const Ring& r, const Eigen::Vector3d& x) const
-  {
-    double q = 180;
-    for(const Cell_handle& c : r.complex_cells) q = (std::min)(q, energy_.min_dihedral_angle(c, r.v, x));
-    return q;
-  }
-
-  // number of cells of the star of the vertex of `r` placed at `x` whose smallest angle is under `a`
-  std::size_t count_under(const Ring& r, const Eigen::Vector3d& x, double a) const
-  {
-    std::size_t n = 0;
-    for(const Cell_handle& c : r.complex_cells)
-      if(energy_.min_dihedral_angle(c, r.v, x) < a) ++n;
-    return n;
-  }
-
-  // penalty of the star of the vertex of `r` placed at `x`
-  double star_penalty(const Ring& r, const Eigen::Vector3d& x) const
-  {
-    double p = 0;
-    for(const Cell_handle& c : r.complex_cells) p += penalty_(energy_.min_dihedral_angle(c, r.v, x));
-    return p;
-  }
-
   // moves the vertex of `r`, whose star has a cell under the bound, up the gradient of
   // its star's smallest angle if that is critical, else down the gradient of its star's
   // penalty; true if that raised the one or lowered the other
   bool lift(const Ring& r) const
   {
     const Eigen::Vector3d x0 = energy_.position(r.v);
-    const double q0 = star_quality(r, x0);
+    const Star_angles a0 = star_angles(r, x0);
+    const double q0 = a0.worst;
     if(!(q0 < bound_)) return false;
     const bool critical = penalty_.is_critical(q0);
-    const auto score = [&](const Eigen::Vector3d& x) { return critical ? star_quality(r, x) : -star_penalty(r, x); };
-    const double s0 = score(x0);
+    const auto score = [&](const Star_angles& a) { return critical ? a.worst : -a.penalty; };
+    const double s0 = score(a0);
     const double least_gain = critical ? 1e-3 : -Angle_penalty::min_relative_gain * s0;
     Eigen::Vector3d d;
-    if(critical ? !max_min_direction(r, x0, q0, d) : !ascent_direction(r, x0, score, d)) return false;
+    if(critical ? !max_min_direction(r, x0, q0, d)
+                : !ascent_direction(r, x0, [&](const Eigen::Vector3d& x) { return score(star_angles(r, x)); }, d))
+      return false;
     double alpha = 0.2 * r.max_neighbor_distance;
     if(critical && shortest_moves_)
       return lift_critical(r, x0, q0 + least_gain, d, alpha, true) ||
              lift_critical(r, x0, q0 + least_gain, d, alpha, false);
     const bool fair_trade = !critical && !(q0 < bound_ - free_trade_margin);
-    const std::size_t under0 = fair_trade ? count_under(r, x0, bound_ + guard_margin) + count_under(r, x0, bound_) : 0;
     for(int k = 0; k < max_backtracking_steps; ++k, alpha *= 0.5) {
       Bare_point p;
       if(!smoother_.candidate(r, x0 + alpha * d, p) || !smoother_.is_valid_position(r, p)) continue;
       const Eigen::Vector3d x = Energy::to_eigen(p);
+      const Star_angles a = star_angles(r, x);
       // a sum of penalties may trade several poor cells for one worse: never below the star's
       // worst, and near the bound, no more cells under the bound + 10 than it lifts over the bound
-      if(score(x) > s0 + least_gain && (critical || star_quality(r, x) >= q0) &&
-         (!fair_trade || count_under(r, x, bound_ + guard_margin) + count_under(r, x, bound_) <= under0) &&
+      if(score(a) > s0 + least_gain && (critical || a.worst >= q0) &&
+         (!fair_trade || a.under_guard + a.under_bound <= a0.under_guard + a0.under_bound) &&
          smoother_.keeps_boundary_faithful(r, p)) {
         smoother_.move(r.v, p);
         return true;
@@ -445,17 +440,16 @@ private:
   bool lift_critical(const Ring& r, const Eigen::Vector3d& x0, double least, const Eigen::Vector3d& d,
                      double alpha, bool guarded) const
   {
-    const double guard = bound_ + guard_margin;
-    const std::size_t under = count_under(r, x0, guard);
+    const std::size_t under = star_angles(r, x0).under_guard;
     double best = least;
     Bare_point best_p;
     bool found = false;
     for(int k = 0; k < max_backtracking_steps; ++k, alpha *= 0.5) {
       Bare_point p;
       if(!smoother_.candidate(r, x0 + alpha * d, p) || !smoother_.is_valid_position(r, p)) continue;
-      const Eigen::Vector3d x = Energy::to_eigen(p);
-      if(guarded && count_under(r, x, guard) > under) continue;
-      const double q = star_quality(r, x);
+      const Star_angles a = star_angles(r, Energy::to_eigen(p));
+      if(guarded && a.under_guard > under) continue;
+      const double q = a.worst;
       // a step that reaches the bound replaces any longer one; a step that does not is taken
       // only while none has reached it, and if it lifts the star more
       if(q < bound_ && (q < best || (found && best >= bound_))) continue;

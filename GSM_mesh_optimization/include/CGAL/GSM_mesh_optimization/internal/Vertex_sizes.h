@@ -11,13 +11,13 @@
 #define CGAL_GSM_MESH_OPTIMIZATION_INTERNAL_VERTEX_SIZES_H
 
 #include <CGAL/GSM_mesh_optimization/tetrahedron_quality.h> // to_eigen
+#include <CGAL/Unique_hash_map.h>
 
 #include <Eigen/Core>
 
 #include <functional>
 #include <sstream>
 #include <stdexcept>
-#include <unordered_map>
 #include <utility>
 
 namespace CGAL {
@@ -32,10 +32,10 @@ public:
   typedef typename Tr::Cell_handle Cell_handle;
 
   /// the values of `field` at the finite vertices of `tr`
-  Vertex_sizes(const Tr& tr, std::function<double(const Eigen::Vector3d&)> field) : field_(std::move(field))
+  Vertex_sizes(const Tr& tr, std::function<double(const Eigen::Vector3d&)> field)
+    : field_(std::move(field)), size_(0., 2 * tr.number_of_vertices())
   {
-    size_.reserve(2 * tr.number_of_vertices());
-    for(const Vertex_handle& v : tr.finite_vertex_handles()) size_.emplace(v, at(to_eigen(tr.point(v))));
+    for(const Vertex_handle& v : tr.finite_vertex_handles()) size_[v] = at(to_eigen(tr.point(v)));
   }
 
   /// the field at `x`; an error if it is not positive and finite
@@ -50,7 +50,7 @@ public:
     return s;
   }
 
-  double operator()(const Vertex_handle& v) const { return size_.find(v)->second; }
+  double operator()(const Vertex_handle& v) const { return size_[v]; }
 
   /// the sum of the sizes of the corners of `c`, with those of `moved` replaced by `size_of_moved`
   double sum(const Cell_handle& c, const Vertex_handle& moved = Vertex_handle(), double size_of_moved = 0) const
@@ -61,23 +61,20 @@ public:
   }
 
   /// takes the field again at `v`'s position `x`. Thread-safe for vertices that have a size
-  /// and that no other thread reads; a new vertex (created in a serial stage) gets its first one
-  void update(const Vertex_handle& v, const Eigen::Vector3d& x)
-  {
-    const double s = at(x);
-    const auto it = size_.find(v);
-    if(it != size_.end())
-      it->second = s;
-    else
-      size_.emplace(v, s);
-  }
+  /// and that no other thread reads (CGAL's map writes nothing but the value for a key it
+  /// holds); a new vertex (created in a serial stage) gets its first one
+  void update(const Vertex_handle& v, const Eigen::Vector3d& x) { size_[v] = at(x); }
 
-  /// `v` is about to be removed from the triangulation
-  void erase(const Vertex_handle& v) { size_.erase(v); }
+  /// `v` is about to be removed from the triangulation: its entry stays, for the next vertex
+  /// the triangulation puts at its address, whose `update()` overwrites it (CGAL's map has no
+  /// removal)
+  void erase(const Vertex_handle&) {}
 
 private:
   std::function<double(const Eigen::Vector3d&)> field_;
-  std::unordered_map<Vertex_handle, double> size_;
+  // CGAL's map of handles: one probe in a flat table where std::unordered_map takes two or
+  // three scattered ones, and every cell energy takes four sizes
+  CGAL::Unique_hash_map<Vertex_handle, double> size_;
 };
 
 } // namespace internal

@@ -73,6 +73,24 @@ public:
     Surface_patch_index patch = Surface_patch_index();
     std::vector<Vertex_handle> curve_neighbors;       // feature-curve vertices
     Curve_index curve = Curve_index();
+
+    /// empties the ring for the next vertex, keeping the vectors' memory (one ring
+    /// serves a whole sweep)
+    void clear()
+    {
+      v = Vertex_handle();
+      dimension = 3;
+      finite_cells.clear();
+      complex_cells.clear();
+      infinite_cells.clear();
+      frames.clear();
+      max_neighbor_distance = 0;
+      surface_facets.clear();
+      normal = Eigen::Vector3d::Zero();
+      patch = Surface_patch_index();
+      curve_neighbors.clear();
+      curve = Curve_index();
+    }
   };
 
   Vertex_smoother(C3T3& c3t3, const MeshDomain* domain, const Energy& energy, bool freeze_boundary)
@@ -110,9 +128,10 @@ public:
 
   /// the one-ring of `v` from its `star` (all cells incident to `v`, infinite
   /// ones included); false if it has no cell in the complex or no frame
-  bool make_ring(const Vertex_handle& v, const std::vector<Cell_handle>& star, Ring& r) const
+  template <class CellRange>
+  bool make_ring(const Vertex_handle& v, const CellRange& star, Ring& r) const
   {
-    r = Ring();
+    r.clear();
     r.v = v;
     r.dimension = c3t3_.in_dimension(v);
     const Eigen::Vector3d x = energy_.position(v);
