@@ -187,8 +187,7 @@ private:
   {
   public:
     Worst_cells_progress(const Mesh_energy<C3T3>& energy, double bound, double angle_gain, double count_share)
-      : energy_(energy), bound_(bound), angle_gain_(angle_gain), count_share_(count_share),
-        best_(energy.worst_and_count_under(bound))
+      : angle_gain_(angle_gain), count_share_(count_share), best_(energy.worst_and_count_under(bound))
     {}
 
     /// `now`: the mesh's `worst_and_count_under(bound)`
@@ -202,8 +201,7 @@ private:
     }
 
   private:
-    const Mesh_energy<C3T3>& energy_;
-    double bound_, angle_gain_, count_share_;
+    double angle_gain_, count_share_;
     std::pair<double, std::size_t> best_;
     int stalled_ = 0;
   };
