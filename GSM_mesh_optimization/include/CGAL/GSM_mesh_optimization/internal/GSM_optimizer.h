@@ -17,7 +17,10 @@
 
 #include <CGAL/Mesh_optimization_return_code.h>
 #include <CGAL/Real_timer.h>
+#include <CGAL/Spatial_sort_traits_adapter_3.h>
 #include <CGAL/Unique_hash_map.h>
+#include <CGAL/hilbert_sort.h>
+#include <CGAL/property_map.h>
 
 #include <boost/range/iterator_range.hpp>
 
@@ -298,7 +301,8 @@ private:
     std::vector<double> step(n, 0.);
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n), [&](const tbb::blocked_range<std::size_t>& range) {
       Ring ring;
-      for(std::size_t i = range.begin(); i != range.end(); ++i) {
+      for(std::size_t r = range.begin(); r != range.end(); ++r) {
+        const std::size_t i = stars.along_curve[r];
         const Vertex_handle v = stars.vertices[i];
         if(!smoother_.is_movable(v) || !smoother_.make_ring(v, stars.cells(i), ring)) continue;
         bool is_descent;
@@ -314,13 +318,15 @@ private:
 
     // what each move reads, once: the batches below scan the deferred vertices again and again
     std::vector<std::vector<std::size_t>> reads(n);
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, pending.size()),
-                      [&](const tbb::blocked_range<std::size_t>& range) {
-      for(std::size_t k = range.begin(); k != range.end(); ++k) stars.reads(pending[k], reads[pending[k]]);
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n), [&](const tbb::blocked_range<std::size_t>& range) {
+      for(std::size_t r = range.begin(); r != range.end(); ++r) {
+        const std::size_t i = stars.along_curve[r];
+        if(step[i] > 0) stars.reads(i, reads[i]);
+      }
     });
 
     std::vector<unsigned> written(n, 0), read(n, 0);
-    std::vector<std::size_t> batch, deferred;
+    std::vector<std::size_t> batch, deferred, visit;
     std::vector<char> moved;
     std::vector<double> change;
     std::size_t moves = 0;
@@ -340,10 +346,17 @@ private:
       }
       moved.assign(batch.size(), 0);
       change.assign(batch.size(), 0.);
+      // the batch's moves are independent: they go along the curve, and their changes are
+      // summed in the batch's order below
+      visit.resize(batch.size());
+      std::iota(visit.begin(), visit.end(), std::size_t(0));
+      std::sort(visit.begin(), visit.end(),
+                [&](std::size_t a, std::size_t b) { return stars.rank[batch[a]] < stars.rank[batch[b]]; });
       tbb::parallel_for(tbb::blocked_range<std::size_t>(0, batch.size(), 16),
                         [&](const tbb::blocked_range<std::size_t>& range) {
         Ring ring;
-        for(std::size_t k = range.begin(); k != range.end(); ++k) {
+        for(std::size_t r = range.begin(); r != range.end(); ++r) {
+          const std::size_t k = visit[r];
           const std::size_t i = batch[k];
           if(smoother_.make_ring(stars.vertices[i], stars.cells(i), ring))
             moved[k] = smoother_.smooth(ring, change[k]);
@@ -366,7 +379,12 @@ private:
   struct Stars
   {
     typedef typename Tr::Cell_handle Cell_handle;
+    typedef typename Tr::Geom_traits::Point_3 Bare_point;
     std::vector<Vertex_handle> vertices;
+    // the vertices along a Hilbert curve, and the place of each on it: sweeps in this order
+    // find the cells and neighbors of the last vertices still in cache (make_mesh_3 leaves
+    // the vertices in memory in the order of its refinement, scattered in space)
+    std::vector<std::size_t> along_curve, rank;
     // CGAL's map of handles: one probe in a flat table where std::unordered_map takes two or
     // three scattered ones
     CGAL::Unique_hash_map<Vertex_handle, std::size_t> index;
@@ -395,6 +413,22 @@ private:
       for(auto c : tr.all_cell_handles())
         for(int i = 0; i < 4; ++i)
           if(!tr.is_infinite(c->vertex(i))) cells_[next[owners[k++]]++] = c;
+
+      std::vector<Bare_point> points;
+      points.reserve(vertices.size());
+      for(const Vertex_handle& v : vertices) {
+        const Eigen::Vector3d p = to_eigen(tr.point(v));
+        points.emplace_back(p[0], p[1], p[2]);
+      }
+      along_curve.resize(vertices.size());
+      std::iota(along_curve.begin(), along_curve.end(), std::size_t(0));
+      typedef CGAL::Spatial_sort_traits_adapter_3<typename Tr::Geom_traits,
+                                                  typename CGAL::Pointer_property_map<Bare_point>::const_type>
+          Sort_traits;
+      const std::vector<Bare_point>& cpoints = points;
+      CGAL::hilbert_sort(along_curve.begin(), along_curve.end(), Sort_traits(CGAL::make_property_map(cpoints)));
+      rank.resize(vertices.size());
+      for(std::size_t r = 0; r < along_curve.size(); ++r) rank[along_curve[r]] = r;
     }
 
     /// the cells around vertex i
