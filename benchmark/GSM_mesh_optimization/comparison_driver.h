@@ -7,6 +7,7 @@
 #ifndef VVM_BENCHMARK_COMPARISON_DRIVER_H
 #define VVM_BENCHMARK_COMPARISON_DRIVER_H
 
+#include "boundary_layering.h"
 #include "compare_optimizers.h"
 #include "dihedral_histogram_svg.h"
 #include "tetrahedral_remeshing_step.h"
@@ -131,6 +132,7 @@ struct Chain_result
   double opt_time_s = 0; // median over the repeats
   std::string return_codes;
   double boundary_distance = -1; // Hausdorff distance to the input surface; < 0: not measured
+  Boundary_layering layering;
 };
 
 template <class C3T3, class MeshDomain>
@@ -230,6 +232,7 @@ private:
       throw Input_error("make_mesh_3 produced an empty mesh for '" + model_ + "'");
     }
     initial_ = std::move(r.c3t3);
+    initial_layering_ = boundary_layering(initial_);
     edge_size_ = r.size;
     mesh_time_s_ = r.time_s;
     if(r.relative_error > 0.1)
@@ -280,6 +283,7 @@ private:
     result.opt_time_s = times.size() % 2 ? times[times.size() / 2]
                                          : 0.5 * (times[times.size() / 2 - 1] + times[times.size() / 2]);
     result.quality = quality(c3t3);
+    result.layering = boundary_layering(c3t3);
     if(boundary_distance_) result.boundary_distance = boundary_distance_(c3t3);
     if(!options_.out_dir.empty()) write_outputs(c3t3, result);
     return result;
@@ -334,6 +338,9 @@ private:
     os << ", \"gamma_min\": " << q.min_radius_ratio << ", \"gamma_mean\": " << q.mean_radius_ratio
        << ", \"n_inverted\": " << q.number_of_inverted_cells << ", \"opt_time_s\": " << r.opt_time_s
        << ", \"hausdorff_to_input\": " << r.boundary_distance
+       << ", \"boundary_vertex_share\": " << r.layering.boundary_vertex_share
+       << ", \"boundary_edge_length\": " << r.layering.boundary_edge_length
+       << ", \"first_layer_ratio\": " << r.layering.first_layer_ratio
        << ", \"field\": \"" << field_.name << "\", \"repeat\": " << (std::max)(1, options_.repeat) << ", \"threads\": " << options_.threads
        << ", \"edge_size\": " << edge_size_ << ", \"mesh_time_s\": " << mesh_time_s_
        << ", \"return_codes\": \"" << r.return_codes << "\"}\n";
@@ -349,6 +356,9 @@ private:
                 "optimizer times are medians of %d run(s)\n",
                 model_.c_str(), field_.name.empty() ? "uniform" : "field-scaled", edge_size_,
                 mesh_time_s_, (std::max)(1, options_.repeat));
+    std::printf("initial mesh: %.0f%% of the vertices on the boundary; edges from it to the first interior "
+                "vertices %.2fx the boundary edges (medians)\n",
+                100 * initial_layering_.boundary_vertex_share, initial_layering_.first_layer_ratio);
     if(!field_.name.empty())
       std::printf("quality measured in the metric of %s (each tet mapped by M^1/2)\n", field_.name.c_str());
     std::printf("%-22s %7s %7s %7s %7s %7s %6s %6s %6s %6s %6s %6s %4s %9s %7s%s\n", "chain", "verts",
@@ -378,6 +388,7 @@ private:
   double domain_volume_;
   Target_field field_;
   std::function<double(const C3T3&)> boundary_distance_;
+  Boundary_layering initial_layering_;
   double initial_boundary_distance_ = -1;
   C3T3 initial_;
   double edge_size_ = 0;

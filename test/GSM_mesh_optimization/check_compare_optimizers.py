@@ -61,6 +61,31 @@ def medit_vertices(path):
     raise ValueError("no Vertices in " + path)
 
 
+def check_layering(name, points, tets, triangles, row):
+    """the boundary share and first-layer ratio of the JSON, recomputed from the .mesh: the
+    vertices of its triangles are the boundary, the edges of its tets are measured"""
+    on_boundary = np.zeros(len(points), bool)
+    on_boundary[triangles.ravel()] = True
+    used = np.unique(tets)
+    share = on_boundary[used].sum() / len(used)
+    check(abs(share - row["boundary_vertex_share"]) < 1e-12,
+          f"{name}: boundary vertex share {share} vs reported {row['boundary_vertex_share']}")
+    edges = np.unique(np.sort(tets[:, [[0, 1], [0, 2], [0, 3], [1, 2], [1, 3], [2, 3]]].reshape(-1, 2), axis=1), axis=0)
+    lengths = np.linalg.norm(points[edges[:, 0]] - points[edges[:, 1]], axis=1)
+    ends = on_boundary[edges].sum(axis=1)
+
+    def lower_median(x):
+        return np.sort(x)[(len(x) - 1) // 2]
+
+    boundary = lower_median(lengths[ends == 2])
+    check(abs(boundary - row["boundary_edge_length"]) < 1e-9 * boundary,
+          f"{name}: median boundary edge {boundary} vs reported {row['boundary_edge_length']}")
+    ratio = lower_median(lengths[ends == 1]) / boundary
+    check(abs(ratio - row["first_layer_ratio"]) < 1e-9 * ratio,
+          f"{name}: first layer ratio {ratio} vs reported {row['first_layer_ratio']}")
+    return ratio
+
+
 def run(args, expect_ok=True):
     r = subprocess.run([EXE] + args, capture_output=True, text=True, timeout=600)
     if expect_ok and r.returncode != 0:
@@ -109,6 +134,8 @@ def check_run(model, args, target, chains):
         check(abs(angles.max() - row["theta_max"]) < 1e-6, f"{model}/{chain}: max dihedral")
         check(int(np.sum(tmin < 30)) == row["n_min_dih_lt30"], f"{model}/{chain}: tets under 30 deg")
         check(abs(tmin.mean() - row["mean_min_dihedral"]) < 1e-6, f"{model}/{chain}: mean min dihedral")
+
+        check_layering(f"{model}/{chain}", points, tets, mesh.get_cells_type("triangle"), row)
 
         vtu = meshio.read(os.path.join(out, f"{model}_{chain}.vtu"))
         vtets = vtu.get_cells_type("tetra")
