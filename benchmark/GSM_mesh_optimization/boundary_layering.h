@@ -2,12 +2,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // How much of a mesh lies on its boundary, and how far its first interior vertices are
-// from it. An optimizer that keeps the vertex count cannot lift the tets between a
-// boundary and an interior much coarser than it: a tet with a boundary edge of length h
-// and an interior edge at distance d has a dihedral angle of about 2 atan(h / 2d) at the
-// interior edge (19 degrees for d = 3h). make_mesh_3 gives such meshes with a tight
-// facet_distance or on parts whose surface needs most of the vertex budget; these
-// figures tell them apart in the benchmark tables.
+// from it. Between a boundary and an interior much coarser than it, an optimizer that
+// keeps the vertex count may not lift the tets: a tet with a boundary edge of length h
+// and, at distance d above its midpoint, an interior edge across it has a dihedral angle
+// of 2 atan(h / 2d) at the interior edge (19 degrees for d = 3h). make_mesh_3 gives such
+// meshes with a tight facet_distance, or on parts whose surface takes most of the vertex
+// budget; these figures tell them apart in the benchmark tables.
 
 #ifndef VVM_BENCHMARK_BOUNDARY_LAYERING_H
 #define VVM_BENCHMARK_BOUNDARY_LAYERING_H
@@ -45,7 +45,10 @@ Boundary_layering boundary_layering(const C3T3& c3t3)
     for(int i = 0; i < 4; ++i)
       if(kind[c->vertex(i)] == not_in_complex) kind[c->vertex(i)] = interior;
   for(auto f = c3t3.facets_in_complex_begin(); f != c3t3.facets_in_complex_end(); ++f)
-    for(int i = 1; i < 4; ++i) kind[f->first->vertex((f->second + i) & 3)] = on_boundary;
+    for(int i = 1; i < 4; ++i) {
+      const Vertex_handle v = f->first->vertex((f->second + i) & 3);
+      if(kind[v] == interior) kind[v] = on_boundary; // only vertices of the cells in the complex
+    }
 
   std::size_t vertices = 0, boundary = 0;
   for(Vertex_handle v : tr.finite_vertex_handles()) {
@@ -54,6 +57,8 @@ Boundary_layering boundary_layering(const C3T3& c3t3)
     boundary += k == on_boundary ? 1 : 0;
   }
   std::vector<double> boundary_edges, first_layer_edges;
+  const auto point = tr.geom_traits().construct_point_3_object();
+  const auto squared_distance = tr.geom_traits().compute_squared_distance_3_object();
   for(auto e = tr.finite_edges_begin(); e != tr.finite_edges_end(); ++e) {
     const Vertex_handle a = e->first->vertex(e->second), b = e->first->vertex(e->third);
     const int ka = std::as_const(kind)[a], kb = std::as_const(kind)[b];
@@ -62,9 +67,7 @@ Boundary_layering boundary_layering(const C3T3& c3t3)
     auto c = tr.incident_cells(*e), done = c;
     do in_complex = c3t3.is_in_complex(c); while(!in_complex && ++c != done);
     if(!in_complex || ka + kb == 0) continue;
-    const auto point = tr.geom_traits().construct_point_3_object();
-    const double length = std::sqrt(CGAL::to_double(
-        tr.geom_traits().compute_squared_distance_3_object()(point(tr.point(a)), point(tr.point(b)))));
+    const double length = std::sqrt(CGAL::to_double(squared_distance(point(tr.point(a)), point(tr.point(b)))));
     (ka + kb == 2 ? boundary_edges : first_layer_edges).push_back(length);
   }
   const auto lower_median = [](std::vector<double>& x) {
@@ -76,7 +79,8 @@ Boundary_layering boundary_layering(const C3T3& c3t3)
   result.boundary_vertex_share = double(boundary) / double(vertices);
   if(boundary_edges.empty()) return result;
   result.boundary_edge_length = lower_median(boundary_edges);
-  if(!first_layer_edges.empty()) result.first_layer_ratio = lower_median(first_layer_edges) / result.boundary_edge_length;
+  if(!first_layer_edges.empty())
+    result.first_layer_ratio = lower_median(first_layer_edges) / result.boundary_edge_length;
   return result;
 }
 

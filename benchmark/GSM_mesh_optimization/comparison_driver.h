@@ -357,7 +357,7 @@ private:
                 model_.c_str(), field_.name.empty() ? "uniform" : "field-scaled", edge_size_,
                 mesh_time_s_, (std::max)(1, options_.repeat));
     std::printf("initial mesh: %.0f%% of the vertices on the boundary; edges from it to the first interior "
-                "vertices %.2fx the boundary edges (medians)\n",
+                "vertices %.2fx the edges between two boundary vertices (medians)\n",
                 100 * initial_layering_.boundary_vertex_share, initial_layering_.first_layer_ratio);
     if(!field_.name.empty())
       std::printf("quality measured in the metric of %s (each tet mapped by M^1/2)\n", field_.name.c_str());

@@ -416,17 +416,15 @@ private:
 
       std::vector<Bare_point> points;
       points.reserve(vertices.size());
-      for(const Vertex_handle& v : vertices) {
-        const Eigen::Vector3d p = to_eigen(tr.point(v));
-        points.emplace_back(p[0], p[1], p[2]);
-      }
+      const auto point = tr.geom_traits().construct_point_3_object();
+      for(const Vertex_handle& v : vertices) points.push_back(point(tr.point(v)));
       along_curve.resize(vertices.size());
       std::iota(along_curve.begin(), along_curve.end(), std::size_t(0));
       typedef CGAL::Spatial_sort_traits_adapter_3<typename Tr::Geom_traits,
                                                   typename CGAL::Pointer_property_map<Bare_point>::const_type>
           Sort_traits;
-      const std::vector<Bare_point>& cpoints = points;
-      CGAL::hilbert_sort(along_curve.begin(), along_curve.end(), Sort_traits(CGAL::make_property_map(cpoints)));
+      CGAL::hilbert_sort(along_curve.begin(), along_curve.end(),
+                         Sort_traits(CGAL::make_property_map(std::as_const(points))));
       rank.resize(vertices.size());
       for(std::size_t r = 0; r < along_curve.size(); ++r) rank[along_curve[r]] = r;
     }
