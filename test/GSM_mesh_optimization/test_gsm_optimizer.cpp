@@ -38,6 +38,7 @@
 #include <CGAL/GSM_mesh_optimization/internal/Boundary_fidelity.h>
 #include <CGAL/GSM_mesh_optimization/internal/Edge_split.h>
 #include <CGAL/GSM_mesh_optimization/internal/Surface_edge_split.h>
+#include <CGAL/GSM_mesh_optimization/internal/Surface_vertex_collapse.h>
 #include <CGAL/GSM_mesh_optimization/internal/Vertex_collapse.h>
 #include <CGAL/GSM_mesh_optimization/internal/Energy_guided_flips.h>
 #include <CGAL/GSM_mesh_optimization/internal/Input_mesh_sizing.h>
@@ -1652,6 +1653,113 @@ C3T3 mesh_two_subdomains(const Domain& domain, double size)
   return CGAL::make_mesh_3<C3T3>(domain, criteria, params::no_perturb(), params::no_exude());
 }
 
+// every facet between two cells of different subdomains (outside: 0) in the complex, no other
+template <class C3T3>
+bool surface_separates_subdomains(const C3T3& c3t3)
+{
+  const auto& tr = c3t3.triangulation();
+  const auto label = [&](const typename C3T3::Cell_handle& c) {
+    return tr.is_infinite(c) || !c3t3.is_in_complex(c) ? 0 : int(c3t3.subdomain_index(c));
+  };
+  for(auto f : tr.finite_facets())
+    if(c3t3.is_in_complex(f) != (label(f.first) != label(f.first->neighbor(f.second)))) return false;
+  return true;
+}
+
+// the convex hull is locally convex at each of its edges, hence convex: the vertex across an
+// edge of a hull facet is not beyond it (an infinite cell with it for its infinite vertex is
+// not positive)
+bool hull_is_convex(const Implicit_tr& tr)
+{
+  for(auto c : tr.all_cell_handles()) {
+    if(!tr.is_infinite(c)) continue;
+    const int inf = c->index(tr.infinite_vertex());
+    for(int j = 0; j < 4; ++j) {
+      if(j == inf) continue;
+      const auto n = c->neighbor(j);
+      std::array<Bare_point, 4> t;
+      for(int k = 0; k < 4; ++k)
+        t[k] = k == inf ? n->vertex(n->index(c))->point().point() : c->vertex(k)->point().point();
+      if(CGAL::orientation(t[0], t[1], t[2], t[3]) == CGAL::POSITIVE) return false;
+    }
+  }
+  return true;
+}
+
+// surface vertex removal by edge collapse on make_mesh_3 meshes whose surface is three times
+// finer than their interior, where the cells under 30 degrees are wedges between surface
+// edges and the interior vertices across them: a torus, and the torus-in-ball (two
+// subdomains, so interface vertices too, and the outer ball on the convex hull). Each
+// collapse takes one surface vertex and two
+// surface facets and moves no vertex (those left on the surface stay where they were, with
+// their dimension); the surface stays closed, each facet in the complex exactly where two
+// subdomains meet, both subdomains and their interface there, the complex valid, the
+// counters and the running sum exact, and the mesh's smallest angle never lower
+template <class Domain>
+void check_surface_vertex_collapses(const char* name, const Domain& domain, double facet_size)
+{
+  CGAL::Mesh_criteria_3<Implicit_tr> criteria(params::facet_angle = 25, params::facet_size = facet_size,
+                                              params::facet_distance = facet_size / 10,
+                                              params::cell_radius_edge_ratio = 3, params::cell_size = 3 * facet_size);
+  CGAL::get_default_random() = CGAL::Random(1);
+  Implicit_c3t3 c3t3 = CGAL::make_mesh_3<Implicit_c3t3>(domain, criteria, params::no_perturb(), params::no_exude());
+  const GSM::internal::Metric_field metric = GSM::internal::Metric_field::uniform(GSM::internal::estimated_edge_length(c3t3));
+  const GSM::internal::Mesh_energy<Implicit_c3t3> energy{c3t3, metric, GSM::Shape_matching_energy::GSM};
+  auto [sum, count] = energy.total();
+  const GSM::internal::Vertex_smoother<Implicit_c3t3, Domain> smoother(c3t3, &domain, energy, false);
+  GSM::internal::Surface_vertex_collapse<Implicit_c3t3, Domain> collapses(
+      c3t3, energy, sum, count, smoother, GSM::internal::Angle_penalty::for_bound(30));
+  std::map<Vertex_handle, std::pair<Bare_point, int>> before;
+  for(auto v : c3t3.triangulation().finite_vertex_handles()) before[v] = {v->point().point(), c3t3.in_dimension(v)};
+  const std::size_t facets_before = c3t3.number_of_facets_in_complex();
+  const auto parts_before = subdomains_and_interface(c3t3);
+  const GSM::Mesh_quality_statistics q0 = GSM::mesh_quality_statistics(c3t3);
+  std::vector<std::array<Vertex_handle, 4>> bad;
+  for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c)
+    if(energy.min_dihedral_angle(c) < 30) bad.push_back({{c->vertex(0), c->vertex(1), c->vertex(2), c->vertex(3)}});
+  std::set<Vertex_handle> removed;
+  for(const auto& t : bad) {
+    if(std::any_of(t.begin(), t.end(), [&](const Vertex_handle& v) { return removed.count(v) != 0; })) continue;
+    Implicit_tr::Cell_handle c;
+    int i, j, k, l;
+    Vertex_handle v;
+    if(!c3t3.triangulation().is_cell(t[0], t[1], t[2], t[3], c, i, j, k, l)) continue;
+    if(collapses.try_collapse_cell(c, v)) {
+      VVM_CHECK_EQUAL(before.at(v).second, 2);
+      removed.insert(v);
+    }
+  }
+  const std::size_t done = removed.size();
+  const GSM::Mesh_quality_statistics q = GSM::mesh_quality_statistics(c3t3);
+  std::cerr << "    " << name << ": " << done << " surface vertex removals for " << bad.size()
+            << " cells under 30 degrees; min dihedral " << q0.min_dihedral_angle << " -> " << q.min_dihedral_angle
+            << ", tets under 30 " << q0.n_min_dihedral_below[2] << " -> " << q.n_min_dihedral_below[2] << "\n";
+  VVM_CHECK(done > 0);
+  VVM_CHECK_EQUAL(c3t3.triangulation().number_of_vertices(), before.size() - done);
+  VVM_CHECK_EQUAL(c3t3.number_of_facets_in_complex(), facets_before - 2 * done);
+  VVM_CHECK(complex_is_valid(c3t3) && surface_is_closed(c3t3) && surface_separates_subdomains(c3t3));
+  VVM_CHECK(hull_is_convex(c3t3.triangulation()));
+  for(auto v : c3t3.triangulation().finite_vertex_handles()) {
+    VVM_CHECK(before.count(v) == 1 && removed.count(v) == 0);
+    VVM_CHECK(before.at(v).first == v->point().point() && before.at(v).second == c3t3.in_dimension(v));
+  }
+  const auto parts = subdomains_and_interface(c3t3);
+  VVM_CHECK(parts.first.size() == parts_before.first.size() && (parts.second > 0) == (parts_before.second > 0));
+  const auto total = energy.total();
+  VVM_CHECK_EQUAL(count, total.second);
+  VVM_CHECK_CLOSE(sum, total.first, 1e-9 * total.first);
+  VVM_CHECK(q.min_dihedral_angle >= q0.min_dihedral_angle - 1e-9);
+  VVM_CHECK_EQUAL(q.number_of_inverted_cells, std::size_t(0));
+}
+
+void test_surface_vertex_collapse()
+{
+  check_surface_vertex_collapses("torus", implicit_domain(torus_function), 0.05);
+  const Implicit_domain labelled(std::function<int(const K::Point_3&)>(torus_in_ball), K::Sphere_3(CGAL::ORIGIN, 2.),
+                                 params::relative_error_bound = 1e-6);
+  check_surface_vertex_collapses("torus-in-ball", labelled, 0.06);
+}
+
 void test_several_subdomains()
 {
   // a labelled implicit domain
@@ -1783,6 +1891,7 @@ int main()
   test_edge_split_on_sphere();
   test_vertex_collapse();
   test_surface_edge_split();
+  test_surface_vertex_collapse();
   test_sphere_run();
   test_bad_input();
   test_cube_with_features();

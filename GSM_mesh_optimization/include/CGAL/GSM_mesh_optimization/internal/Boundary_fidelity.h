@@ -147,6 +147,9 @@ public:
     return it == vertex_bounds_.end() ? floors_[fine] : (std::max)(floors_[fine], it->second[fine]);
   }
 
+  /// whether `v` has a bound of its own, over the floor
+  bool has_own_bound(const Vertex_handle& v) const { return vertex_bounds_.count(v) != 0; }
+
   /// the estimate of the largest distance between the initial boundary and the surface (in
   /// either direction) that caps the bounds
   double largest_initial_distance() const { return largest_; }

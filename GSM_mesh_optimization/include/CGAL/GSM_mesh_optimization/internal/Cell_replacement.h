@@ -188,12 +188,16 @@ protected:
         const Cell_handle n = c->neighbor(i);
         if(std::find(cells.begin(), cells.end(), n) != cells.end()) continue;
         const int in = n->index(c);
-        if(n->is_facet_on_surface(in)) {
-          c->set_surface_patch_index(i, n->surface_patch_index(in));
-          c->set_facet_surface_center(i, n->get_facet_surface_center(in));
-          c->set_facet_surface_center_index(i, n->get_facet_surface_center_index(in));
-        }
+        if(n->is_facet_on_surface(in)) copy_facet_data(n, in, c, i);
       }
+  }
+
+  // the surface data of the facet (from, i) to the facet (to, j)
+  static void copy_facet_data(const Cell_handle& from, int i, const Cell_handle& to, int j)
+  {
+    to->set_surface_patch_index(j, from->surface_patch_index(i));
+    to->set_facet_surface_center(j, from->get_facet_surface_center(i));
+    to->set_facet_surface_center_index(j, from->get_facet_surface_center_index(i));
   }
 
   C3T3& c3t3_;

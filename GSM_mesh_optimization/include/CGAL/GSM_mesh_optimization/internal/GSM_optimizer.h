@@ -220,7 +220,10 @@ private:
     Surface_edge_split<C3T3, MeshDomain> surface_splits(c3t3_, energy_, sum, count, smoother_,
                                                         Angle_penalty::for_bound(options_.sliver_bound));
     Vertex_collapse<C3T3> collapses(c3t3_, energy_, sum, count);
+    Surface_vertex_collapse<C3T3, MeshDomain> surface_collapses(c3t3_, energy_, sum, count, smoother_,
+                                                                Angle_penalty::for_bound(options_.sliver_bound));
     Sliver_polisher<C3T3, MeshDomain> polisher(c3t3_, energy_, smoother_, flips, splits, surface_splits, collapses,
+                                               surface_collapses,
                                                options_.sliver_bound,
                                                options_.do_split, options_.freeze_boundary,
                                                options_.shortest_moves);

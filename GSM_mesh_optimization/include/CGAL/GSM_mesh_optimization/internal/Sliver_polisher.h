@@ -31,6 +31,12 @@
 //   boundary peel of Energy_guided_flips.h) when its two other facets stray from
 //   the surface no further than the boundary may (Boundary_fidelity.h); so is a cap
 //   with three, whose fourth facet becomes the surface;
+// - a surface vertex of a cell under the bound is removed (Surface_vertex_collapse.h)
+//   when its collapse into a neighbour on its patch beats its star's smallest angle, the
+//   new facets as faithful to the surface as the boundary may be; each removal lets one
+//   more split happen. Where the surface is much finer than the interior (turbine, the
+//   graded torus-in-ball), the cells under the bound are wedges between surface edges
+//   and the few interior vertices that neither moves nor splits lift;
 // - a cell that no move lifts gets an interior edge split (Edge_split.h) when the
 //   smallest angle of the new cells beats that of the old ones, and, unless the
 //   cell is critical, the penalty of the new cells beats that of the old ones;
@@ -64,6 +70,7 @@
 #include <CGAL/GSM_mesh_optimization/internal/Energy_guided_flips.h>
 #include <CGAL/GSM_mesh_optimization/internal/Least_norm_point_of_hull.h>
 #include <CGAL/GSM_mesh_optimization/internal/Surface_edge_split.h>
+#include <CGAL/GSM_mesh_optimization/internal/Surface_vertex_collapse.h>
 #include <CGAL/GSM_mesh_optimization/internal/Vertex_collapse.h>
 #include <CGAL/GSM_mesh_optimization/internal/Vertex_smoother.h>
 
@@ -98,10 +105,11 @@ public:
   /// `bound`: the smallest dihedral angle sought, in degrees
   Sliver_polisher(C3T3& c3t3, const Energy& energy, const Smoother& smoother, Energy_guided_flips<C3T3>& flips,
                   Edge_split<C3T3>& splits, Surface_edge_split<C3T3, MeshDomain>& surface_splits,
-                  Vertex_collapse<C3T3>& collapses, double bound, bool do_split,
+                  Vertex_collapse<C3T3>& collapses, Surface_vertex_collapse<C3T3, MeshDomain>& surface_collapses,
+                  double bound, bool do_split,
                   bool boundary_fixed, bool shortest_moves)
     : c3t3_(c3t3), tr_(c3t3.triangulation()), energy_(energy), smoother_(smoother), flips_(flips), splits_(splits),
-      surface_splits_(surface_splits), collapses_(collapses),
+      surface_splits_(surface_splits), collapses_(collapses), surface_collapses_(surface_collapses),
       bound_(bound), penalty_(Angle_penalty::for_bound(bound)), do_split_(do_split), boundary_fixed_(boundary_fixed),
       shortest_moves_(shortest_moves),
       split_budget_(std::size_t(max_split_fraction * double(c3t3.triangulation().number_of_vertices()))),
@@ -150,10 +158,25 @@ public:
       return done;
     rescan_if(done.peels > 0);
     if(!do_split_) return done;
+    // surface vertices whose removal lifts a cell: each pays for a split
+    if(!boundary_fixed_) {
+      std::size_t n = 0;
+      std::unordered_set<Vertex_handle> removed; // their handles are dangling
+      const auto collapse = [&](const Cell_handle& c, const Cell_vertices&) {
+        Vertex_handle v;
+        if(!surface_collapses_.try_collapse_cell(c, v)) return false;
+        removed.insert(v);
+        return true;
+      };
+      if(!change_bad_cells(bad, collapse, stop, n, &removed)) return done;
+      done.removals += n;
+      split_budget_ += n;
+      rescan_if(n > 0);
+    }
     // the vertex budget is spent: vertices whose removal leaves good cells pay for more splits
     if(split_budget_ == 0 && removal_budget_ > 0) {
       const std::size_t n = collapses_.collapse_vertices((std::min)(bad.size(), removal_budget_), bound_ + removal_margin);
-      done.removals = n;
+      done.removals += n;
       removal_budget_ -= n;
       split_budget_ += n;
       rescan_if(n > 0);
@@ -199,16 +222,19 @@ private:
   typedef std::array<Vertex_handle, 4> Cell_vertices;
 
   // calls `change(c, vertices)` on each cell of `bad` (the cells under the bound, worst first)
-  // that is still there, changes replacing cells, and counts in `changed` those it says it
-  // changed; false if `stop()` ended it
+  // that is still there (none of its vertices `removed`), changes replacing cells, and counts
+  // in `changed` those it says it changed; false if `stop()` ended it
   template <class Change, class Stop>
   bool change_bad_cells(const std::vector<std::pair<double, Cell_vertices>>& bad, const Change& change,
-                        const Stop& stop, std::size_t& changed)
+                        const Stop& stop, std::size_t& changed,
+                        const std::unordered_set<Vertex_handle>* removed = nullptr)
   {
     for(const auto& b : bad) {
       if(stop()) return false;
       Cell_handle c;
       const Cell_vertices& t = b.second;
+      if(removed != nullptr && std::any_of(t.begin(), t.end(), [&](const Vertex_handle& v) { return removed->count(v) != 0; }))
+        continue;
       int i, j, k, l;
       if(tr_.is_cell(t[0], t[1], t[2], t[3], c, i, j, k, l) && change(c, t)) ++changed;
     }
@@ -348,6 +374,7 @@ private:
     penalty_.critical = bad.size() > k ? std::nextafter(bad[k - 1].first, 180.) : bound_;
     splits_.set_penalty(penalty_);
     surface_splits_.set_penalty(penalty_);
+    surface_collapses_.set_penalty(penalty_);
   }
 
   // the cells in the complex under the bound, worst first, with their vertices
@@ -470,6 +497,7 @@ private:
   Edge_split<C3T3>& splits_;
   Surface_edge_split<C3T3, MeshDomain>& surface_splits_;
   Vertex_collapse<C3T3>& collapses_;
+  Surface_vertex_collapse<C3T3, MeshDomain>& surface_collapses_;
   double bound_;
   Angle_penalty penalty_;
   bool do_split_;

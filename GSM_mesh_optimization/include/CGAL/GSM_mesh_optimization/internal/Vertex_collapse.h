@@ -43,6 +43,7 @@ public:
   typedef typename Base::Tr Tr;
   typedef typename Base::Vertex_handle Vertex_handle;
   typedef typename Base::Cell_handle Cell_handle;
+  typedef typename Base::Facet Facet;
   typedef typename Base::Subdomain_index Subdomain_index;
 
   using Base::Base;
@@ -76,40 +77,7 @@ public:
   }
 
   /// makes the collapse `k`, found by `best_collapse()` on the triangulation as it is
-  void apply(const Collapse& k)
-  {
-    const Vertex_handle v = k.v, w = k.w;
-    std::vector<Cell_handle> star, around, others;
-    Subdomain_index s;
-    removable_vertex(v, star, s);
-    double old_sum = 0, new_sum = 0;
-    for(const Cell_handle& c : star) {
-      old_sum += this->energy_.cell(c);
-      if(c->has_vertex(w)) {
-        around.push_back(c);
-      } else {
-        others.push_back(c);
-        new_sum += new_cell_energy(c, v, w);
-      }
-    }
-    this->release(star);
-    auto& tds = this->tr_.tds();
-    for(const Cell_handle& c : around) {
-      // the facets of c opposite v and opposite w become one
-      const Cell_handle nv = c->neighbor(c->index(v)), nw = c->neighbor(c->index(w));
-      const int iv = nv->index(c), iw = nw->index(c);
-      nv->set_neighbor(iv, nw);
-      nw->set_neighbor(iw, nv);
-      for(int i = 0; i < 4; ++i)
-        if(c->vertex(i) != v) c->vertex(i)->set_cell(nv);
-    }
-    for(const Cell_handle& c : others) c->set_vertex(c->index(v), w);
-    for(const Cell_handle& c : around) tds.delete_cell(c);
-    this->energy_.vertex_removed(v);
-    tds.delete_vertex(v);
-    this->claim(others, s);
-    this->account(old_sum, new_sum, -int(around.size()));
-  }
+  void apply(const Collapse& k) { collapse(k.v, k.w); }
 
   /// removes up to `n` vertices, those whose removal leaves the best cells first, each
   /// only if its new cells' smallest dihedral angle is at least `least` degrees; the stars
@@ -154,15 +122,23 @@ private:
     return !star.empty();
   }
 
-  // the smallest dihedral angle of the cells of the collapse of `v` into `w`, or -1 if it is
-  // not allowed or not over `floor`
+protected:
+  // the smallest dihedral angle of the new cells in the complex of the collapse of `v` (with
+  // the incident cells `star` and the adjacent vertices `neighbours`) into `w`, or -1 if it is
+  // not allowed (a new finite cell not positive, the convex hull no longer convex, the link
+  // condition) or not over `floor`
   double collapse_angle(const Vertex_handle& v, const Vertex_handle& w, const std::vector<Cell_handle>& star,
                         const std::vector<Vertex_handle>& neighbours, double floor) const
   {
     std::vector<Vertex_handle> ring;
+    std::vector<Cell_handle> new_hull;
     const Eigen::Vector3d x = this->energy_.position(w);
     double q = 180;
     for(const Cell_handle& c : star) {
+      if(this->tr_.is_infinite(c) && !c->has_vertex(w)) {
+        new_hull.push_back(c);
+        continue;
+      }
       if(c->has_vertex(w)) {
         for(int i = 0; i < 4; ++i)
           if(c->vertex(i) != v && c->vertex(i) != w) ring.push_back(c->vertex(i));
@@ -172,6 +148,7 @@ private:
       std::array<Vertex_handle, 4> t{{c->vertex(0), c->vertex(1), c->vertex(2), c->vertex(3)}};
       t[i] = w;
       if(this->orientation(t[0], t[1], t[2], t[3]) != CGAL::POSITIVE) return -1;
+      if(!this->c3t3_.is_in_complex(c)) continue; // outside cells only need to be valid
       q = (std::min)(q, this->energy_.min_dihedral_angle(c, v, x));
       if(!(q > floor)) return -1;
     }
@@ -182,7 +159,95 @@ private:
       int i, j;
       if(this->tr_.is_edge(u, w, c, i, j)) return -1;
     }
-    return q;
+    return new_hull.empty() || stays_convex(v, w, new_hull) ? q : -1;
+  }
+
+  // whether the hull facets of the infinite cells `new_hull` of the star of `v`, with `w` for
+  // `v`, leave the convex hull convex: no hull vertex next to `v` or `w`, or across an edge of
+  // them, beyond one of them (locally convex everywhere, the hull is convex)
+  bool stays_convex(const Vertex_handle& v, const Vertex_handle& w, const std::vector<Cell_handle>& new_hull) const
+  {
+    std::vector<Vertex_handle> near;
+    for(const Vertex_handle& u : {v, w}) {
+      std::vector<Cell_handle> cells;
+      this->tr_.incident_cells(u, std::back_inserter(cells));
+      for(const Cell_handle& c : cells)
+        if(this->tr_.is_infinite(c))
+          for(int i = 0; i < 4; ++i)
+            if(!this->tr_.is_infinite(c->vertex(i)) && c->vertex(i) != v &&
+               std::find(near.begin(), near.end(), c->vertex(i)) == near.end())
+              near.push_back(c->vertex(i));
+    }
+    // and the hull vertices across the edges opposite `v` of its hull facets
+    for(const Cell_handle& c : new_hull) {
+      const Cell_handle n = c->neighbor(c->index(v));
+      const Vertex_handle z = n->vertex(n->index(c));
+      if(std::find(near.begin(), near.end(), z) == near.end()) near.push_back(z);
+    }
+    for(const Cell_handle& c : new_hull) {
+      std::array<Vertex_handle, 4> t{{c->vertex(0), c->vertex(1), c->vertex(2), c->vertex(3)}};
+      t[c->index(v)] = w;
+      const int inf = c->index(this->tr_.infinite_vertex());
+      for(const Vertex_handle& z : near) {
+        if(std::find(t.begin(), t.end(), z) != t.end()) continue;
+        // an infinite cell is positive with its infinite vertex beyond its facet
+        t[inf] = z;
+        const CGAL::Orientation o = this->orientation(t[0], t[1], t[2], t[3]);
+        t[inf] = this->tr_.infinite_vertex();
+        if(o == CGAL::POSITIVE) return false;
+      }
+    }
+    return true;
+  }
+
+  // Removes `v` into its neighbour `w`; each cell keeps its subdomain. The facets through
+  // (v, w) go with the cells around it; where one of the two facets a gone cell glues
+  // together was a surface facet, the glued facet takes its data (callers exclude the case
+  // of both). A surface facet of `v` elsewhere stays a surface facet, with `w` for `v`.
+  void collapse(const Vertex_handle& v, const Vertex_handle& w)
+  {
+    std::vector<Cell_handle> star, around, others;
+    this->tr_.incident_cells(v, std::back_inserter(star));
+    double old_sum = 0, new_sum = 0;
+    int gone = 0;
+    for(const Cell_handle& c : star) {
+      const bool in = this->c3t3_.is_in_complex(c);
+      if(in) old_sum += this->energy_.cell(c);
+      if(c->has_vertex(w)) {
+        around.push_back(c);
+        gone += in ? 1 : 0;
+      } else {
+        others.push_back(c);
+        if(in) new_sum += new_cell_energy(c, v, w);
+      }
+    }
+    for(const Cell_handle& c : around) {
+      for(int i = 0; i < 4; ++i)
+        if(c->vertex(i) != v && c->vertex(i) != w) this->c3t3_.remove_from_complex(Facet(c, i));
+      this->c3t3_.remove_from_complex(c);
+    }
+    auto& tds = this->tr_.tds();
+    for(const Cell_handle& c : around) {
+      // the facets of c opposite v and opposite w become one
+      const Cell_handle nv = c->neighbor(c->index(v)), nw = c->neighbor(c->index(w));
+      const int iv = nv->index(c), iw = nw->index(c);
+      if constexpr(!Is_triangulation_complex<C3T3>::value) {
+        if(nv->is_facet_on_surface(iv)) this->copy_facet_data(nv, iv, nw, iw);
+        else if(nw->is_facet_on_surface(iw)) this->copy_facet_data(nw, iw, nv, iv);
+      }
+      nv->set_neighbor(iv, nw);
+      nw->set_neighbor(iw, nv);
+      for(int i = 0; i < 4; ++i)
+        if(c->vertex(i) != v) c->vertex(i)->set_cell(nv);
+    }
+    for(const Cell_handle& c : others) {
+      c->set_vertex(c->index(v), w);
+      this->log_vertices(c);
+    }
+    for(const Cell_handle& c : around) tds.delete_cell(c);
+    this->energy_.vertex_removed(v);
+    tds.delete_vertex(v);
+    this->account(old_sum, new_sum, -gone);
   }
 
   // energy of cell `c` with `w` in place of its vertex `v`

@@ -363,6 +363,30 @@ public:
       return fidelity_ && (fidelity_->is_faithful(t, patch, v) || fidelity_->strays_no_further(t, whole, patch, 0.01));
   }
 
+  /// the triangle `t` of the patch `patch`, on the vertices `v`, strays no further from the
+  /// surface than the boundary may (for a new surface facet)
+  bool is_faithful_triangle(const std::array<Bare_point, 3>& t, const Surface_patch_index& patch,
+                            const std::array<Vertex_handle, 3>& v) const
+  {
+    if constexpr(std::is_void<MeshDomain>::value) {
+      CGAL_USE(t);
+      CGAL_USE(patch);
+      CGAL_USE(v);
+      return false;
+    } else
+      return fidelity_ && fidelity_->is_faithful(t, patch, v);
+  }
+
+  /// whether the facets of `v` may stray further than the floor: they did at the start
+  bool has_own_boundary_bound(const Vertex_handle& v) const
+  {
+    if constexpr(std::is_void<MeshDomain>::value) {
+      CGAL_USE(v);
+      return false;
+    } else
+      return fidelity_ && fidelity_->has_own_bound(v);
+  }
+
   /// the facets of a boundary vertex at `p` stray no further from the surface than the initial ones
   bool keeps_boundary_faithful(const Ring& r, const Bare_point& p) const
   {
