@@ -168,9 +168,10 @@ public:
         removed.insert(v);
         return true;
       };
-      if(!change_bad_cells(bad, collapse, stop, n, &removed)) return done;
+      const bool finished = change_bad_cells(bad, collapse, stop, n, &removed);
       done.removals += n;
       split_budget_ += n;
+      if(!finished) return done;
       rescan_if(n > 0);
     }
     // the vertex budget is spent: vertices whose removal leaves good cells pay for more splits

@@ -12,9 +12,10 @@
 //
 // The collapse is made on the whole star of v, outside cells included (each cell
 // keeps its subdomain), when every new finite cell is positive, the link condition
-// holds, the smallest dihedral angle of the new cells in the complex beats that of
-// v's star by half a degree (and, unless the star's worst cell is critical, their
-// angle penalty is lower), and every surface facet that takes w for v strays from
+// holds (in the triangulation, and on the surface: no pinched surface edge), the
+// smallest dihedral angle of the new cells in the complex beats that of v's star by
+// half a degree (and, unless the star's worst cell is critical, their angle penalty
+// is lower), and every surface facet that takes w for v strays from
 // the surface no further than the boundary may (Boundary_fidelity.h); a vertex on the
 // convex hull (a convex domain's whole surface) is removed only if the hull stays
 // convex. Vertices on feature curves, on a patch border, and those whose facets
@@ -172,8 +173,19 @@ private:
     const Vertex_handle v = s.v;
     // (v, w) must be an edge of exactly two of v's surface facets
     int through = 0;
-    for(const auto& f : s.facets) through += (f[0] == w || f[1] == w) ? 1 : 0;
+    std::vector<Vertex_handle> apexes;
+    for(const auto& f : s.facets)
+      if(f[0] == w || f[1] == w) {
+        ++through;
+        apexes.push_back(f[0] == w ? f[1] : f[0]);
+      }
     if(through != 2) return false;
+    // the link condition on the surface: a surface neighbour of both v and w is an apex of
+    // (v, w) (else, as across a neck, the surface would be pinched at an edge)
+    for(const auto& f : s.facets)
+      for(const Vertex_handle& u : f)
+        if(u != w && std::find(apexes.begin(), apexes.end(), u) == apexes.end() && is_surface_edge(u, w))
+          return false;
     // a gone cell must not glue two surface facets together
     for(const Cell_handle& c : s.cells)
       if(c->has_vertex(w) && this->c3t3_.is_in_complex(c, c->index(v)) && this->c3t3_.is_in_complex(c, c->index(w)))
@@ -199,6 +211,22 @@ private:
         return false;
     }
     return true;
+  }
+
+  // whether (u, w) is an edge of a surface facet
+  bool is_surface_edge(const Vertex_handle& u, const Vertex_handle& w) const
+  {
+    Cell_handle c;
+    int i, j;
+    if(!this->tr_.is_edge(u, w, c, i, j)) return false;
+    auto cc = this->tr_.incident_cells(typename Tr::Edge(c, i, j)), done = cc;
+    do {
+      const Cell_handle d = cc;
+      const int iu = d->index(u), iw = d->index(w);
+      for(int k = 0; k < 4; ++k)
+        if(k != iu && k != iw && this->c3t3_.is_in_complex(d, k)) return true;
+    } while(++cc != done);
+    return false;
   }
 
   const Smoother& smoother_;
