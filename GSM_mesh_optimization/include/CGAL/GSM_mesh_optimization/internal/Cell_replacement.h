@@ -192,6 +192,16 @@ protected:
       }
   }
 
+  // whether the surface facet `(c, i)` is seen from `c`: each once, from the cell in the
+  // complex, or of larger subdomain index on an interface (as the smoother orients them)
+  bool seen_from(const Cell_handle& c, int i) const
+  {
+    if(tr_.is_infinite(c) || !c3t3_.is_in_complex(c)) return false;
+    const Cell_handle m = c->neighbor(i);
+    if(tr_.is_infinite(m) || !c3t3_.is_in_complex(m)) return true;
+    return c3t3_.subdomain_index(m) < c3t3_.subdomain_index(c);
+  }
+
   // the surface data of the facet (from, i) to the facet (to, j)
   static void copy_facet_data(const Cell_handle& from, int i, const Cell_handle& to, int j)
   {

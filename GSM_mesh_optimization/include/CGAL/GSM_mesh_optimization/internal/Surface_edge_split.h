@@ -136,7 +136,7 @@ private:
       const int ia = c->index(s.a), ib = c->index(s.b);
       for(int i = 0; i < 4; ++i) {
         if(i == ia || i == ib || !c3t3_.is_in_complex(c, i)) continue;
-        if(!seen_from(c, i)) continue;
+        if(!this->seen_from(c, i)) continue;
         if(n_surface == 2) return false;
         const Surface_patch_index patch = c3t3_.surface_patch_index(c, i);
         if(n_surface == 1 && !(patch == s.patch)) return false; // the edge is on a patch border
@@ -170,16 +170,6 @@ private:
       s.new_penalty += penalty_(energy_.min_dihedral_angle(c, replaced, x));
     });
     return std::isfinite(s.new_sum);
-  }
-
-  // whether the surface facet `(c, i)` is seen from `c`: each once, from the cell in the
-  // complex, or of larger subdomain index on an interface (as the smoother orients them)
-  bool seen_from(const Cell_handle& c, int i) const
-  {
-    if(tr_.is_infinite(c) || !c3t3_.is_in_complex(c)) return false;
-    const Cell_handle m = c->neighbor(i);
-    if(tr_.is_infinite(m) || !c3t3_.is_in_complex(m)) return true;
-    return c3t3_.subdomain_index(m) < c3t3_.subdomain_index(c);
   }
 
   // the point where the line through `x` along the normal meets the edge's patch, within `reach`

@@ -144,7 +144,7 @@ private:
       s.penalty += penalty_(q);
       const int iv = c->index(v);
       for(int i = 0; i < 4; ++i) {
-        if(i == iv || !this->c3t3_.is_in_complex(c, i) || !seen_from(c, i)) continue;
+        if(i == iv || !this->c3t3_.is_in_complex(c, i) || !this->seen_from(c, i)) continue;
         const Surface_patch_index patch = this->c3t3_.surface_patch_index(c, i);
         if(!first && !(patch == s.patch)) return false; // on a patch border
         s.patch = patch;
@@ -157,15 +157,6 @@ private:
       }
     }
     return !first;
-  }
-
-  // whether the surface facet `(c, i)` is seen from `c`: each once, from the cell in the
-  // complex, or of larger subdomain index on an interface
-  bool seen_from(const Cell_handle& c, int i) const
-  {
-    const Cell_handle m = c->neighbor(i);
-    if(this->tr_.is_infinite(m) || !this->c3t3_.is_in_complex(m)) return true;
-    return this->c3t3_.subdomain_index(m) < this->c3t3_.subdomain_index(c);
   }
 
   bool plan(const Star& s, const Vertex_handle& w, Plan& p) const
