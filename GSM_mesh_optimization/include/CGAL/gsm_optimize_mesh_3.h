@@ -222,7 +222,12 @@ gsm_optimize(C3T3& c3t3, const MeshDomain* domain, bool boundary_fixed, const Na
  * one of its surface edges by a new vertex on the domain's surface (when its
  * facets stay faithful to it), adding at most 3% of the vertex count; past that, interior vertices whose removal (an
  * edge collapse) leaves only cells 5 degrees over the bound are removed, each paying
- * for one more split (at most 3% of the vertex count). Polishing trades a little energy (the new
+ * for one more split (at most 3% of the vertex count). A surface vertex (not on a feature curve
+ * or a patch border) goes by edge collapse into a neighbour on its patch when that raises the
+ * smallest angle of its star and lowers its penalty, with the new facets and the vertex's point
+ * as near each other and the surface as the boundary may be; the first pass tries every surface
+ * vertex, the later ones those of the cells under the bound, and each removal pays for one more
+ * split, so the result may have fewer vertices than the input. Polishing trades a little energy (the new
  * cells are smaller than the target) for the worst angles; `split_edges(false)`
  * keeps the vertex set, `sliver_bound(0)` skips the stage. Its passes stop when
  * two in a row have neither raised the smallest angle by half a degree nor
@@ -300,7 +305,8 @@ gsm_optimize(C3T3& c3t3, const MeshDomain* domain, bool boundary_fixed, const Na
  *     \cgalParamDescription{whether the polishing may split interior edges of the cells under the
  *       sliver bound, adding interior vertices, and then their surface edges, adding surface
  *       vertices on the domain's surface (at most 3% of the vertex count net: past that,
- *       interior vertices where the cells stay good are removed to pay for more); `false`
+ *       interior vertices where the cells stay good are removed to pay for more), and remove
+ *       surface vertices by edge collapse where that lifts their star; `false`
  *       keeps the vertex set}
  *     \cgalParamType{bool}
  *     \cgalParamDefault{true}

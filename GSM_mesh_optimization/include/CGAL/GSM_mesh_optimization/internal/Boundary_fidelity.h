@@ -5,7 +5,9 @@
 // Boundary vertices that move stay on the surface, but the facets between them
 // can cut deeper into it (or bulge further out), most of all across creases the
 // domain does not protect: the boundary's Hausdorff distance to the surface
-// grows. Both directions of it grow together, so one measure serves both.
+// grows. Where vertices only move, both directions of it grow together, so one
+// measure serves both; where a surface vertex goes (Surface_vertex_collapse.h), its
+// point is checked against the facets that replace it too.
 //
 // The deviation of a surface facet is the largest distance from points of a
 // grid on it to its own patch, along its normal, found with the domain's

@@ -16,7 +16,8 @@
 // smallest dihedral angle of the new cells in the complex beats that of v's star by
 // half a degree (and, unless the star's worst cell is critical, their angle penalty
 // is lower), and every surface facet that takes w for v strays from
-// the surface no further than the boundary may (Boundary_fidelity.h); a vertex on the
+// the surface no further than the boundary may (Boundary_fidelity.h), nor v's point
+// (on the surface) lies further from them than that; a vertex on the
 // convex hull (a convex domain's whole surface) is removed only if the hull stays
 // convex. Vertices on feature curves, on a patch border, and those whose facets
 // strayed more than the others at the start (where the boundary's distance to the
@@ -28,10 +29,14 @@
 #include <CGAL/GSM_mesh_optimization/internal/Angle_penalty.h>
 #include <CGAL/GSM_mesh_optimization/internal/Vertex_collapse.h>
 #include <CGAL/GSM_mesh_optimization/internal/Vertex_smoother.h>
+#include <CGAL/Kernel_traits.h>
+#include <CGAL/squared_distance_3.h>
 
 #include <algorithm>
+#include <cmath>
 #include <array>
 #include <iterator>
+#include <limits>
 #include <type_traits>
 #include <vector>
 
@@ -52,6 +57,7 @@ public:
   typedef typename C3T3::Surface_patch_index Surface_patch_index;
   typedef Vertex_smoother<C3T3, MeshDomain> Smoother;
   typedef typename Smoother::Bare_point Bare_point;
+  typedef typename CGAL::Kernel_traits<Bare_point>::Kernel::Triangle_3 Triangle_3;
 
   /// degrees: a collapse must beat the smallest angle of the star by this much
   static constexpr double min_gain = 0.5;
@@ -177,6 +183,18 @@ private:
       for(const Vertex_handle& u : f)
         if(u != w && std::find(apexes.begin(), apexes.end(), u) == apexes.end() && is_surface_edge(u, w))
           return false;
+    // v, a point of the surface, stays as near the new facets as the boundary may be to the
+    // surface: new facets near the surface can still cut off what v stood for (the tip of a thin
+    // part), the other direction of the Hausdorff distance
+    double nearest2 = std::numeric_limits<double>::infinity();
+    for(const auto& f : s.facets)
+      if(f[0] != w && f[1] != w)
+        nearest2 = (std::min)(nearest2, CGAL::to_double(CGAL::squared_distance(
+                                            this->bare(v), Triangle_3(this->bare(w), this->bare(f[0]), this->bare(f[1])))));
+    // (a hair more on a flat patch, whose bound is 0: rounding decides nothing)
+    const double allowed = (std::max)(smoother_.boundary_bound(v),
+                                      1e-9 * std::sqrt(CGAL::to_double(CGAL::squared_distance(this->bare(v), this->bare(w)))));
+    if(!(nearest2 <= allowed * allowed)) return false;
     // a gone cell must not glue two surface facets together
     for(const Cell_handle& c : s.cells)
       if(c->has_vertex(w) && this->c3t3_.is_in_complex(c, c->index(v)) && this->c3t3_.is_in_complex(c, c->index(w)))

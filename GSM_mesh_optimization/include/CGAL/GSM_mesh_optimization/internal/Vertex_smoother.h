@@ -377,6 +377,17 @@ public:
       return fidelity_ && fidelity_->is_faithful(t, patch, v);
   }
 
+  /// how far the surface near the boundary vertex `v` may be from the boundary: its facets'
+  /// bound, up to the largest initial distance between the boundary and the surface
+  double boundary_bound(const Vertex_handle& v) const
+  {
+    if constexpr(std::is_void<MeshDomain>::value) {
+      CGAL_USE(v);
+      return 0;
+    } else
+      return fidelity_ ? (std::min)(fidelity_->bound(v), fidelity_->largest_initial_distance()) : 0;
+  }
+
   /// whether the facets of `v` may stray further than the floor: they did at the start
   bool has_own_boundary_bound(const Vertex_handle& v) const
   {
