@@ -43,7 +43,7 @@ const char* usage =
     "                      gsm-uniform (gsm with one target size instead of the input's local size),\n"
     "                      remesh (CGAL's tetrahedral_isotropic_remeshing, 3 iterations, feature\n"
     "                      edges constrained, the edge length that keeps the vertex count within\n"
-    "                      10%), joined by '+'\n"
+    "                      10%; only gsm may follow it), joined by '+'\n"
     "                      (default: init,lloyd,odt,perturb,exude,perturb+exude,\n"
     "                       lloyd+perturb+exude,odt+perturb+exude,gsm,odt+gsm,lloyd+gsm)\n"
     "  --repeat N          runs per chain; optimizer times are medians (default 1)\n"

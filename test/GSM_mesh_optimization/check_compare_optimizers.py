@@ -219,6 +219,7 @@ def main():
     check_error("non-finite coordinate", [write("nan_cube.off", nan_cube)], "non-finite", "cannot read")
     check_error("no input", [], "no INPUT")
     check_error("unknown chain", ["sphere", "--chains", "init,smooth"], "unknown optimizer 'smooth'")
+    check_error("Mesh_3 after remesh", ["sphere", "--chains", "remesh+lloyd"], "only gsm can follow remesh")
     check_error("unknown option", ["sphere", "--speed", "3"], "unknown option")
     check_error("bad number", ["sphere", "--vertices", "ten"], "expects a number")
     check_error("too few vertices", ["sphere", "--vertices", "3"], "--vertices")
