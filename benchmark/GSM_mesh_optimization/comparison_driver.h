@@ -73,7 +73,7 @@ inline std::vector<std::string> chain_steps(const std::string& chain)
                         "' (known: init, lloyd, odt, perturb, exude, gsm, gsm-esm, gsm-uniform, remesh, joined by '+')");
     // CGAL 5.5.1's Mesh_3 optimizers are not made for tetrahedral remeshing's output: lloyd
     // after remesh crashes in Mesh_global_optimizer::compute_move (fandisk at 3k vertices),
-    // perturb on turbine at 10k
+    // and remesh+perturb+exude on turbine at 10k
     if(step != "remesh" && step.compare(0, 3, "gsm") != 0 &&
        std::find(steps.begin(), steps.end(), "remesh") != steps.end())
       throw Input_error("chain '" + chain + "': only gsm can follow remesh (Mesh_3's " + step +
