@@ -2,7 +2,8 @@
 # Installs what VVM needs to build, test and benchmark on Debian 12 (bookworm).
 set -euo pipefail
 # gmsh: the hex-dominant I/O test checks and re-saves its .msh with it.
-packages=(g++ make cmake libcgal-dev libeigen3-dev libtbb-dev libboost-dev liblbfgspp-dev python3-meshio gmsh)
+# ccache: the build compiles through it when present (CMakeLists.txt).
+packages=(g++ make cmake ccache libcgal-dev libeigen3-dev libtbb-dev libboost-dev liblbfgspp-dev python3-meshio gmsh)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "ok installed" || missing+=("$p")

@@ -7,7 +7,7 @@
 // from an independent computation (dihedral angles by projecting onto the
 // plane normal to the edge, circumcenter by solving the 3x3 linear system).
 
-#include "test_utilities.h"
+#include "vvm_test.h"
 
 #include <CGAL/GSM_mesh_optimization/mesh_quality_statistics.h>
 #include <CGAL/GSM_mesh_optimization/tetrahedron_quality.h>
@@ -319,20 +319,20 @@ void test_c3t3_statistics()
 
 } // namespace
 
-int main()
+int main(int argc, char** argv)
 {
-  test_regular_tetrahedron();
-  test_inverted_tetrahedron();
-  test_bcc_tetrahedron();
-  test_fcc_tetrahedra();
-  test_sliver();
-  test_cap();
-  test_needle();
-  test_flat_tetrahedron();
-  test_smallest_angle_alone();
-  test_mapped_tetrahedron();
-  test_triangulation_statistics();
-  test_accumulated_counts();
-  test_c3t3_statistics();
-  return vvm_test::report("test_quality_measures");
+  return vvm_test::run(argc, argv, "test_quality_measures", {
+      {"regular_tetrahedron", test_regular_tetrahedron},
+      {"inverted_tetrahedron", test_inverted_tetrahedron},
+      {"bcc_tetrahedron", test_bcc_tetrahedron},
+      {"fcc_tetrahedra", test_fcc_tetrahedra},
+      {"sliver", test_sliver},
+      {"cap", test_cap},
+      {"needle", test_needle},
+      {"flat_tetrahedron", test_flat_tetrahedron},
+      {"smallest_angle_alone", test_smallest_angle_alone},
+      {"mapped_tetrahedron", test_mapped_tetrahedron},
+      {"triangulation_statistics", test_triangulation_statistics},
+      {"accumulated_counts", test_accumulated_counts},
+      {"c3t3_statistics", test_c3t3_statistics}});
 }

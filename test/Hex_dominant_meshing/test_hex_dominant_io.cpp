@@ -6,6 +6,8 @@
 // mixed.vtu, mixed.msh, mixed.mesh and expected.txt (JSON) into argv[1], which
 // check_hex_dominant_files.py reads back with meshio and Gmsh.
 
+#include "vvm_test.h"
+
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Linear_cell_complex_for_combinatorial_map.h>
 
@@ -16,7 +18,6 @@
 #include <CGAL/Hex_dominant_meshing/hex_dominant_mesh_to_linear_cell_complex.h>
 
 #include <algorithm>
-#include <cassert>
 #include <cmath>
 #include <cstddef>
 #include <filesystem>
@@ -57,7 +58,7 @@ double cell_volume(const Mesh& mesh, const Cell& c)
   for(const auto& t : sub_tetrahedra(c.type)) {
     const double v = CGAL::volume(mesh.points[c.vertices[t[0]]], mesh.points[c.vertices[t[1]]],
                                   mesh.points[c.vertices[t[2]]], mesh.points[c.vertices[t[3]]]);
-    assert(v > 0);
+    VVM_CHECK(v > 0);
     volume += v;
   }
   return volume;
@@ -67,7 +68,7 @@ Cell make_cell(Cell_type t, std::vector<std::size_t> v, int subdomain)
 {
   Cell c;
   c.type = t;
-  assert(v.size() == CGAL::number_of_vertices(t));
+  VVM_CHECK(v.size() == CGAL::number_of_vertices(t));
   std::copy(v.begin(), v.end(), c.vertices.begin());
   c.subdomain_index = subdomain;
   return c;
@@ -128,13 +129,13 @@ void check_linear_cell_complex(const Mesh& mesh, const std::vector<double>& volu
   LCC lcc;
   lcc.make_tetrahedron(Point(5, 5, 5), Point(6, 5, 5), Point(5, 6, 5), Point(5, 5, 6)); // replaced
   CGAL::Hex_dominant_meshing::hex_dominant_mesh_to_linear_cell_complex(mesh, lcc);
-  assert(lcc.is_valid());
-  assert(lcc.one_dart_per_cell<3>().size() == mesh.number_of_cells());
-  assert(lcc.number_of_vertex_attributes() == expected_vertex_attributes);
-  assert(lcc.number_of_darts() == 12 + 24 + 16 + 18);
+  VVM_CHECK(lcc.is_valid());
+  VVM_CHECK(lcc.one_dart_per_cell<3>().size() == mesh.number_of_cells());
+  VVM_CHECK(lcc.number_of_vertex_attributes() == expected_vertex_attributes);
+  VVM_CHECK(lcc.number_of_darts() == 12 + 24 + 16 + 18);
   std::size_t sewn_darts = 0;
   for(auto d = lcc.darts().begin(); d != lcc.darts().end(); ++d) sewn_darts += !lcc.is_free<3>(d);
-  assert(sewn_darts == expected_sewn_darts);
+  VVM_CHECK(sewn_darts == expected_sewn_darts);
   std::vector<double> lcc_volumes;
   auto lcc_cells = lcc.one_dart_per_cell<3>();
   for(auto d = lcc_cells.begin(), end = lcc_cells.end(); d != end; ++d) lcc_volumes.push_back(lcc_volume(lcc, d));
@@ -142,7 +143,7 @@ void check_linear_cell_complex(const Mesh& mesh, const std::vector<double>& volu
   std::sort(sorted_volumes.begin(), sorted_volumes.end());
   std::sort(lcc_volumes.begin(), lcc_volumes.end());
   for(std::size_t i = 0; i < lcc_volumes.size(); ++i)
-    assert(std::abs(lcc_volumes[i] - sorted_volumes[i]) < 1e-14); // all alike oriented, inner normals
+    VVM_CHECK(std::abs(lcc_volumes[i] - sorted_volumes[i]) < 1e-14); // all alike oriented, inner normals
   std::cout << "linear cell complex: " << lcc.number_of_darts() << " darts, " << sewn_darts << " 3-sewn, "
             << lcc.one_dart_per_cell<3>().size() << " volumes, " << lcc.number_of_vertex_attributes()
             << " vertex attributes for " << mesh.number_of_points() << " points, valid" << std::endl;
@@ -180,9 +181,9 @@ int main(int argc, char** argv)
   std::filesystem::create_directories(out_dir);
 
   const Mesh mesh = make_mixed_block(false);
-  assert(mesh.number_of_points() == 12 && mesh.number_of_cells() == 4);
+  VVM_CHECK(mesh.number_of_points() == 12 && mesh.number_of_cells() == 4);
   for(Cell_type t : {Cell_type::TETRAHEDRON, Cell_type::HEXAHEDRON, Cell_type::PRISM, Cell_type::PYRAMID})
-    assert(mesh.number_of_cells(t) == 1);
+    VVM_CHECK(mesh.number_of_cells(t) == 1);
   std::vector<double> volumes, indices;
   double total_volume = 0;
   for(std::size_t k = 0; k < mesh.number_of_cells(); ++k) {
@@ -191,9 +192,9 @@ int main(int argc, char** argv)
     total_volume += volumes.back();
   }
   const double expected_total_volume = 2;
-  assert(std::abs(total_volume - expected_total_volume) < 1e-14);
+  VVM_CHECK(std::abs(total_volume - expected_total_volume) < 1e-14);
   const double expected_volumes[] = {1. / 6, 1, 1. / 3, 0.5};
-  for(std::size_t k = 0; k < 4; ++k) assert(std::abs(volumes[k] - expected_volumes[k]) < 1e-15);
+  for(std::size_t k = 0; k < 4; ++k) VVM_CHECK(std::abs(volumes[k] - expected_volumes[k]) < 1e-15);
 
   check_linear_cell_complex(mesh, volumes, 2 * 4 + 2 * 4 + 2 * 3, mesh.number_of_points());
   // The quadrilateral against two triangles stays 3-free on both sides, so the points
@@ -214,50 +215,50 @@ int main(int argc, char** argv)
   {
     std::ostringstream vtu;
     IO::write_VTU(vtu, mesh);
-    assert(vtu.str().find("\n1 2 9 5 6 11\n") != std::string::npos);
-    assert(vtu.str().find("\n1 9 11 5 10\n") != std::string::npos);
+    VVM_CHECK(vtu.str().find("\n1 2 9 5 6 11\n") != std::string::npos);
+    VVM_CHECK(vtu.str().find("\n1 9 11 5 10\n") != std::string::npos);
     std::ostringstream msh;
     IO::write_MSH(msh, mesh);
-    assert(msh.str().find("\n4 2 10 3 6 12 7\n") != std::string::npos); // element 4, the prism
-    assert(msh.str().find("$Entities\n0 0 0 3\n") != std::string::npos);
+    VVM_CHECK(msh.str().find("\n4 2 10 3 6 12 7\n") != std::string::npos); // element 4, the prism
+    VVM_CHECK(msh.str().find("$Entities\n0 0 0 3\n") != std::string::npos);
     std::ostringstream medit;
     IO::write_MEDIT(medit, mesh);
-    assert(medit.str().find("Prisms\n1\n2 10 3 6 12 7 2\n") != std::string::npos);
+    VVM_CHECK(medit.str().find("Prisms\n1\n2 10 3 6 12 7 2\n") != std::string::npos);
   }
 
   // errors
   {
     Fields short_field = {{"volume", volumes}, {"short", std::vector<double>(3, 1.)}};
     std::ostringstream os;
-    assert(throws_invalid_argument([&] { IO::write_VTU(os, mesh, short_field); }));
-    assert(os.str().empty()); // checked before anything is written
+    VVM_CHECK(throws_invalid_argument([&] { IO::write_VTU(os, mesh, short_field); }));
+    VVM_CHECK(os.str().empty()); // checked before anything is written
     const std::filesystem::path not_written = out_dir / "not_written.vtu";
     std::filesystem::remove(not_written);
-    assert(throws_invalid_argument([&] { IO::write_VTU(not_written.string(), mesh, short_field); }));
-    assert(!std::filesystem::exists(not_written));
+    VVM_CHECK(throws_invalid_argument([&] { IO::write_VTU(not_written.string(), mesh, short_field); }));
+    VVM_CHECK(!std::filesystem::exists(not_written));
 
     Mesh bad_subdomain = mesh;
     bad_subdomain.cells[2].subdomain_index = 0;
-    assert(throws_invalid_argument([&] { IO::write_MSH(os, bad_subdomain); }));
-    assert(os.str().empty());
+    VVM_CHECK(throws_invalid_argument([&] { IO::write_MSH(os, bad_subdomain); }));
+    VVM_CHECK(os.str().empty());
 
     const std::string no_dir = (out_dir / "no_such_directory" / "mixed").string();
-    assert(throws_runtime_error([&] { IO::write_VTU(no_dir + ".vtu", mesh); }));
-    assert(throws_runtime_error([&] { IO::write_MSH(no_dir + ".msh", mesh); }));
-    assert(throws_runtime_error([&] { IO::write_MEDIT(no_dir + ".mesh", mesh); }));
+    VVM_CHECK(throws_runtime_error([&] { IO::write_VTU(no_dir + ".vtu", mesh); }));
+    VVM_CHECK(throws_runtime_error([&] { IO::write_MSH(no_dir + ".msh", mesh); }));
+    VVM_CHECK(throws_runtime_error([&] { IO::write_MEDIT(no_dir + ".mesh", mesh); }));
 
     std::ostringstream failed;
     failed.setstate(std::ios::badbit);
-    assert(throws_runtime_error([&] { IO::write_VTU(failed, mesh); }));
-    assert(throws_runtime_error([&] { IO::write_MSH(failed, mesh); }));
-    assert(throws_runtime_error([&] { IO::write_MEDIT(failed, mesh); }));
+    VVM_CHECK(throws_runtime_error([&] { IO::write_VTU(failed, mesh); }));
+    VVM_CHECK(throws_runtime_error([&] { IO::write_MSH(failed, mesh); }));
+    VVM_CHECK(throws_runtime_error([&] { IO::write_MEDIT(failed, mesh); }));
 
     std::ostringstream precision;
     precision.precision(3);
     IO::write_MEDIT(precision, mesh);
     IO::write_MSH(precision, mesh);
     IO::write_VTU(precision, mesh, fields);
-    assert(precision.precision() == 3);
+    VVM_CHECK(precision.precision() == 3);
   }
 
   // what the files must hold, for the Python check
@@ -291,8 +292,8 @@ int main(int argc, char** argv)
       first_type = false;
     }
     expected << "\n  }\n}\n";
-    assert(expected);
+    VVM_CHECK(expected);
   }
   std::cout << "wrote mixed.vtu, mixed.msh, mixed.mesh and expected.txt to " << out_dir.string() << std::endl;
-  return 0;
+  return vvm_test::report("test_hex_dominant_io");
 }

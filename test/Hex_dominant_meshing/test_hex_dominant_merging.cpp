@@ -1,94 +1,23 @@
-// Tests of the tet merging of Hex_dominant_meshing (tets_to_hex_dominant) and of
-// make_hex_dominant_mesh_3:
+// Copyright (c) 2026 VVM contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The tet merging of Hex_dominant_meshing (tets_to_hex_dominant) on hand-made tets (unit
+// tests, no mesh generation):
 // - every triangulation of a (perturbed) cube, 5, 6 and 7 tets, all classes up to the
 //   cube's symmetries, merges into one hexahedron with the cube's corner order;
 // - hand-made prisms and pyramids are found;
 // - the Delaunay tets of a perfect cubic grid merge into hexahedra only; per-cell scaled
 //   Jacobians of hand-computed cells;
 // - on random Delaunay tets the cells partition the tets, are positively oriented, conform,
-//   and conflicting candidates are never both kept;
-// - tets Delaunay in the field's space: the metric flips turn the Euclidean Delaunay tets of
-//   a stretched grid, which cross its boxes, into tets that merge; make_hex_dominant_mesh_3 on
-//   a warped cube with a shear field, and on a cube with Fig. 4.8's field (cells 80 times
-//   thinner along x than across), gives hexahedra only;
-// - a flat tet on a hexahedron's boundary quad is taken in by it;
-// - the boundary refinement brings the tets' boundary closer to a sphere;
+//   and conflicting candidates are never both kept; non-conforming faces are detected;
+// - the metric flips turn the Euclidean Delaunay tets of a stretched grid, which cross
+//   its boxes, into tets that merge;
 // - bad inputs throw.
 
-#include <CGAL/make_hex_dominant_mesh_3.h>
-#include <CGAL/tets_to_hex_dominant.h>
-#include <CGAL/Frame_fields/Constant_frame_field_3.h>
-#include <CGAL/Frame_fields/dissertation_frame_fields.h>
-#include <CGAL/Hex_dominant_meshing/cell_quality.h>
-#include <CGAL/Hex_dominant_meshing/hex_dominant_statistics.h>
-#include <CGAL/Tetrahedral_lattice_meshing/internal/Metric_Delaunay_flips.h>
-#include <CGAL/GSM_mesh_optimization/internal/Triangulation_complex.h>
-
-#include <CGAL/AABB_face_graph_triangle_primitive.h>
-#include <CGAL/AABB_traits.h>
-#include <CGAL/AABB_tree.h>
-#include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
-#include <CGAL/Mesh_complex_3_in_triangulation_3.h>
-#include <CGAL/Mesh_triangulation_3.h>
-#include <CGAL/Polyhedral_mesh_domain_with_features_3.h>
-#include <CGAL/Surface_mesh.h>
-
-#include <CGAL/Delaunay_triangulation_3.h>
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Random.h>
-#include <CGAL/Regular_triangulation_3.h>
-
-#include <cassert>
-#include <cmath>
-#include <iostream>
-#include <map>
-#include <set>
-#include <stdexcept>
-#include <vector>
-
-typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
-typedef K::Point_3 Point_3;
-typedef K::Weighted_point_3 Weighted_point_3;
-typedef CGAL::Delaunay_triangulation_3<K> Delaunay;
-typedef CGAL::Regular_triangulation_3<K> Regular;
-typedef CGAL::Triangulation_vertex_base_with_info_3<int, K> Vb_info;
-typedef CGAL::Regular_triangulation_vertex_base_3<K, Vb_info> Rvb;
-typedef CGAL::Triangulation_data_structure_3<Rvb, CGAL::Regular_triangulation_cell_base_3<K>> Rtds;
-typedef CGAL::Regular_triangulation_3<K, Rtds> Regular_with_info;
-typedef CGAL::Hex_dominant_mesh_3<Point_3> Mesh;
-namespace HDM = CGAL::Hex_dominant_meshing;
-namespace TLM = CGAL::Tetrahedral_lattice_meshing;
-typedef CGAL::Surface_mesh<Point_3> Surface_mesh;
-typedef CGAL::Polyhedral_mesh_domain_with_features_3<K, Surface_mesh> Cube_domain;
-typedef CGAL::Mesh_triangulation_3<Cube_domain, CGAL::Default, CGAL::Sequential_tag>::type Cube_tr;
-typedef CGAL::Mesh_complex_3_in_triangulation_3<Cube_tr, Cube_domain::Corner_index, Cube_domain::Curve_index> Cube_c3t3;
-typedef CGAL::Frame_fields::Constant_frame_field_3<K> Constant_field;
+#include "hex_dominant_test_support.h"
 
 namespace {
 
-int failures = 0;
-#define CHECK(c)                                                                  \
-  do {                                                                            \
-    if(!(c)) {                                                                    \
-      std::cerr << __FILE__ << ":" << __LINE__ << ": check failed: " #c "\n";     \
-      ++failures;                                                                 \
-    }                                                                             \
-  } while(0)
-
-// true if `f` throws std::invalid_argument (its message printed)
-template <class F>
-bool throws(F f)
-{
-  try {
-    f();
-  } catch(const std::invalid_argument& e) {
-    std::cout << "  refused: " << e.what() << "\n";
-    return true;
-  }
-  return false;
-}
-
-// the 48 symmetries of the cube, as permutations of the corner numbers x + 2y + 4z
 std::vector<std::array<int, 8>> cube_symmetries()
 {
   std::vector<std::array<int, 8>> out;
@@ -122,17 +51,6 @@ Tet_set canonical(const Tet_set& tets, const std::vector<std::array<int, 8>>& sy
     if(best.empty() || image < best) best = image;
   }
   return best;
-}
-
-// the hexahedron's edges (VTK order) join cube corners that differ in one coordinate
-bool has_cube_corner_order(const Mesh::Cell& c, const std::vector<int>& corner_of_point)
-{
-  static const int edges[12][2] = {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {4, 5}, {5, 6}, {6, 7}, {7, 4}, {0, 4}, {1, 5}, {2, 6}, {3, 7}};
-  for(const auto& e : edges) {
-    const int x = corner_of_point[c.vertices[std::size_t(e[0])]] ^ corner_of_point[c.vertices[std::size_t(e[1])]];
-    if(x != 1 && x != 2 && x != 4) return false;
-  }
-  return true;
 }
 
 void test_cube_triangulations()
@@ -192,7 +110,7 @@ void test_cube_triangulations()
                 << int(mesh.cells[0].type) << "\n";
       for(const auto& t : tets) std::cerr << "  " << t[0] << t[1] << t[2] << t[3] << "\n";
     }
-    CHECK(one_hex);
+    VVM_CHECK(one_hex);
     merged += one_hex;
   }
   std::map<int, int> per_count;
@@ -203,8 +121,8 @@ void test_cube_triangulations()
   for(const auto& p : per_count) std::cout << p.second << " of " << p.first << " tets, ";
   std::cout << ")\n";
   // Sokolov et al. 2016: 6 ways with 5 or 6 tets
-  CHECK(per_count[5] + per_count[6] == 6);
-  CHECK(merged == patterns);
+  VVM_CHECK(per_count[5] + per_count[6] == 6);
+  VVM_CHECK(merged == patterns);
 }
 
 // the hexahedra of 7 tets: the cube cut by the plane x = y into two prisms, a flat tet
@@ -262,14 +180,14 @@ void test_seven_tet_hexahedra()
       for(int c = 0; c < 8; ++c) corner_of_point[std::size_t(c)] = c;
       const bool one_hex = mesh.cells.size() == 1 && mesh.cells[0].type == CGAL::Hex_dominant_cell_type::HEXAHEDRON &&
                            has_cube_corner_order(mesh.cells[0], corner_of_point) && report.cell_tets[0].size() == 7;
-      CHECK(one_hex);
+      VVM_CHECK(one_hex);
       merged += one_hex;
     }
   }
   std::cout << "7-tet hexahedra: " << built << " built, " << merged << " merged, " << classes.size()
             << " classes up to symmetry\n";
-  CHECK(built == 9 && merged == 9);
-  CHECK(classes.size() == 4); // Sokolov et al. 2016: 4 ways
+  VVM_CHECK(built == 9 && merged == 9);
+  VVM_CHECK(classes.size() == 4); // Sokolov et al. 2016: 4 ways
 }
 
 // a prism and a pyramid of their tets, with the corner order checked
@@ -282,38 +200,38 @@ void test_prism_and_pyramid()
                                        Weighted_point_3(Point_3(0, 1, 0), 0.2), Weighted_point_3(Point_3(0, 0, 1), 0.05),
                                        Weighted_point_3(Point_3(1, 0, 1), 0.15), Weighted_point_3(Point_3(0, 1, 1), 0.25)};
     Regular tr(p.begin(), p.end());
-    CHECK(tr.number_of_finite_cells() == 3);
+    VVM_CHECK(tr.number_of_finite_cells() == 3);
     const Mesh m = CGAL::tets_to_hex_dominant(tr, HDM::parameters::quality_bound(0.));
-    CHECK(m.cells.size() == 1 && m.cells[0].type == CGAL::Hex_dominant_cell_type::PRISM);
+    VVM_CHECK(m.cells.size() == 1 && m.cells[0].type == CGAL::Hex_dominant_cell_type::PRISM);
     if(m.cells.size() == 1) {
       // 0 1 2 a triangle at one z, 3 4 5 above it in the same order
       const auto& c = m.cells[0];
       for(int k = 0; k < 3; ++k) {
         const Point_3& a = m.points[c.vertices[std::size_t(k)]];
         const Point_3& b = m.points[c.vertices[std::size_t(k + 3)]];
-        CHECK(a.x() == b.x() && a.y() == b.y() && a.z() != b.z());
+        VVM_CHECK(a.x() == b.x() && a.y() == b.y() && a.z() != b.z());
       }
-      CHECK(HDM::minimum_corner_jacobian(m, c) > 0);
-      CHECK(std::abs(HDM::cell_volume(m, c) - 0.5) < 1e-12);
+      VVM_CHECK(HDM::minimum_corner_jacobian(m, c) > 0);
+      VVM_CHECK(std::abs(HDM::cell_volume(m, c) - 0.5) < 1e-12);
     }
     // prisms not allowed: tets stay
     const Mesh h = CGAL::tets_to_hex_dominant(tr, HDM::parameters::cell_types(HDM::Cell_types::HEXAHEDRA));
-    CHECK(h.cells.size() == 3 && h.number_of_cells(CGAL::Hex_dominant_cell_type::TETRAHEDRON) == 3);
+    VVM_CHECK(h.cells.size() == 3 && h.number_of_cells(CGAL::Hex_dominant_cell_type::TETRAHEDRON) == 3);
   }
   // pyramid: unit square base, apex above its centre
   {
     std::vector<Point_3> p = {Point_3(0, 0, 0), Point_3(1, 0, 0), Point_3(1, 1, 0), Point_3(0, 1, 0), Point_3(0.5, 0.5, 0.7)};
     Delaunay tr(p.begin(), p.end());
-    CHECK(tr.number_of_finite_cells() == 2);
+    VVM_CHECK(tr.number_of_finite_cells() == 2);
     const Mesh m = CGAL::tets_to_hex_dominant(tr, HDM::parameters::quality_bound(0.));
-    CHECK(m.cells.size() == 1 && m.cells[0].type == CGAL::Hex_dominant_cell_type::PYRAMID);
+    VVM_CHECK(m.cells.size() == 1 && m.cells[0].type == CGAL::Hex_dominant_cell_type::PYRAMID);
     if(m.cells.size() == 1) {
-      CHECK(m.points[m.cells[0].vertices[4]] == p[4]); // the apex last
-      CHECK(HDM::minimum_corner_jacobian(m, m.cells[0]) > 0);
-      CHECK(std::abs(HDM::cell_volume(m, m.cells[0]) - 0.7 / 3) < 1e-12);
+      VVM_CHECK(m.points[m.cells[0].vertices[4]] == p[4]); // the apex last
+      VVM_CHECK(HDM::minimum_corner_jacobian(m, m.cells[0]) > 0);
+      VVM_CHECK(std::abs(HDM::cell_volume(m, m.cells[0]) - 0.7 / 3) < 1e-12);
     }
     const Mesh t = CGAL::tets_to_hex_dominant(tr, HDM::parameters::cell_types(HDM::Cell_types::HEXAHEDRA_AND_PRISMS));
-    CHECK(t.cells.size() == 2);
+    VVM_CHECK(t.cells.size() == 2);
   }
 }
 
@@ -328,7 +246,7 @@ void check_partition(const Mesh& mesh, const HDM::Hex_dominant_merge_report& rep
   for(auto c : tr.finite_cell_handles()) cells.push_back(c);
   double tet_volume = 0;
   for(auto c : cells) tet_volume += tr.tetrahedron(c).volume();
-  CHECK(report.number_of_tets == cells.size());
+  VVM_CHECK(report.number_of_tets == cells.size());
   std::vector<int> uses(report.number_of_tets, 0);
   bool corners_match = report.cell_tets.size() == mesh.cells.size();
   for(std::size_t i = 0; corners_match && i < mesh.cells.size(); ++i) {
@@ -340,14 +258,14 @@ void check_partition(const Mesh& mesh, const HDM::Hex_dominant_merge_report& rep
     }
     corners_match = corners == used;
   }
-  CHECK(corners_match);
-  CHECK(std::count(uses.begin(), uses.end(), 1) == std::ptrdiff_t(uses.size()));
+  VVM_CHECK(corners_match);
+  VVM_CHECK(std::count(uses.begin(), uses.end(), 1) == std::ptrdiff_t(uses.size()));
   const HDM::Hex_dominant_statistics s = HDM::hex_dominant_statistics(mesh, {}, &report);
   std::cout << "  partition: nonconforming " << s.number_of_nonconforming_faces << ", volume " << s.total_volume << " vs tets "
             << tet_volume << "\n";
-  CHECK(s.number_of_inverted_cells == 0);
-  CHECK(s.number_of_nonconforming_faces == 0);
-  CHECK(std::abs(s.total_volume - tet_volume) <= volume_tolerance * tet_volume);
+  VVM_CHECK(s.number_of_inverted_cells == 0);
+  VVM_CHECK(s.number_of_nonconforming_faces == 0);
+  VVM_CHECK(std::abs(s.total_volume - tet_volume) <= volume_tolerance * tet_volume);
 }
 
 void test_cubic_grid()
@@ -364,16 +282,16 @@ void test_cubic_grid()
   std::cout << "cubic grid " << n << "^3: " << report.number_of_tets << " tets, " << report.number_of_hexahedron_candidates
             << " hexahedron candidates -> " << s.number_of_hexahedra << " hexahedra, " << mesh.cells.size() - s.number_of_hexahedra
             << " other cells, H_vol " << s.hexahedron_volume_percent << "%, SJ min " << s.scaled_jacobian_min << "\n";
-  CHECK(s.number_of_hexahedra == std::size_t((n - 1) * (n - 1) * (n - 1)));
-  CHECK(mesh.cells.size() == s.number_of_hexahedra);
-  CHECK(std::abs(s.hexahedron_volume_percent - 100.) < 1e-9);
-  CHECK(std::abs(s.scaled_jacobian_min - 1.) < 1e-12 && std::abs(s.verdict_scaled_jacobian_min - 1.) < 1e-12);
-  CHECK(s.alignment_error_mean < 1e-9);
+  VVM_CHECK(s.number_of_hexahedra == std::size_t((n - 1) * (n - 1) * (n - 1)));
+  VVM_CHECK(mesh.cells.size() == s.number_of_hexahedra);
+  VVM_CHECK(std::abs(s.hexahedron_volume_percent - 100.) < 1e-9);
+  VVM_CHECK(std::abs(s.scaled_jacobian_min - 1.) < 1e-12 && std::abs(s.verdict_scaled_jacobian_min - 1.) < 1e-12);
+  VVM_CHECK(s.alignment_error_mean < 1e-9);
   check_partition(mesh, report, tr, 1e-12);
   // a left-handed frame field (an axis reversed) measures the same cells
   const Mesh mirrored = CGAL::tets_to_hex_dominant(tr, HDM::parameters::frame_field(
       Constant_field(Eigen::Vector3d(-1, 1, 1).asDiagonal()), HDM::parameters::quality_bound(0.9)));
-  CHECK(mirrored.number_of_cells(CGAL::Hex_dominant_cell_type::HEXAHEDRON) == std::size_t((n - 1) * (n - 1) * (n - 1)));
+  VVM_CHECK(mirrored.number_of_cells(CGAL::Hex_dominant_cell_type::HEXAHEDRON) == std::size_t((n - 1) * (n - 1) * (n - 1)));
 }
 
 // cell_scaled_jacobians on hand-computed cells: the unit cube with its top shifted by (1, 0, 0)
@@ -404,10 +322,10 @@ void test_cell_scaled_jacobians()
   const std::vector<double> in_field = HDM::cell_scaled_jacobians(mesh, [&](const Eigen::Vector3d&) { return unshear; });
   std::cout << "cell scaled Jacobians: sheared hexahedron " << euclidean[0] << ", unsheared " << in_field[0]
             << ", corner tetrahedron " << euclidean[1] << "\n";
-  CHECK(euclidean.size() == 2 && in_field.size() == 2);
-  CHECK(std::abs(euclidean[0] - std::sqrt(0.5)) < 1e-12);
-  CHECK(std::abs(in_field[0] - 1) < 1e-12);
-  CHECK(std::abs(euclidean[1] - 0.5) < 1e-12);
+  VVM_CHECK(euclidean.size() == 2 && in_field.size() == 2);
+  VVM_CHECK(std::abs(euclidean[0] - std::sqrt(0.5)) < 1e-12);
+  VVM_CHECK(std::abs(in_field[0] - 1) < 1e-12);
+  VVM_CHECK(std::abs(euclidean[1] - 0.5) < 1e-12);
 }
 
 void test_random_tets()
@@ -435,14 +353,14 @@ void test_random_tets()
                 << " tets; H_vol " << s.hexahedron_volume_percent << "%\n";
       // faces may be non-planar: the cell volumes add up to the tets' within the non-planarity
       check_partition(mesh, report, tr, q > 0 ? 0.02 : 0.05);
-      if(round == 1) CHECK(s.number_of_hexahedra > 0);
+      if(round == 1) VVM_CHECK(s.number_of_hexahedra > 0);
       // identical for one thread
       const Mesh one = CGAL::tets_to_hex_dominant(
           tr, HDM::parameters::quality_bound(q, CGAL::Tetrahedral_lattice_meshing::parameters::number_of_threads(1)));
       bool same = one.cells.size() == mesh.cells.size();
       for(std::size_t i = 0; same && i < one.cells.size(); ++i)
         same = one.cells[i].type == mesh.cells[i].type && one.cells[i].vertices == mesh.cells[i].vertices;
-      CHECK(same);
+      VVM_CHECK(same);
     }
   }
 }
@@ -458,83 +376,22 @@ void test_nonconforming_detected()
   Delaunay tr(points.begin(), points.end());
   HDM::Hex_dominant_merge_report report;
   Mesh mesh = CGAL::tets_to_hex_dominant(tr, HDM::parameters::merge_report(&report));
-  CHECK(mesh.cells.size() == 2 && HDM::count_nonconforming_faces(mesh, report) == 0);
+  VVM_CHECK(mesh.cells.size() == 2 && HDM::count_nonconforming_faces(mesh, report) == 0);
   if(mesh.cells.size() != 2) return;
   // a quarter turn of the second hexahedron's corner list about its 0-1 axis keeps it a
   // hexahedron of the same corners but moves its faces
   auto& v = mesh.cells[1].vertices;
   const std::array<std::size_t, 8> w = {{v[3], v[2], v[6], v[7], v[0], v[1], v[5], v[4]}};
   std::copy(w.begin(), w.end(), v.begin());
-  CHECK(HDM::count_nonconforming_faces(mesh, report) == 0); // a symmetry of the cell: still conforming
+  VVM_CHECK(HDM::count_nonconforming_faces(mesh, report) == 0); // a symmetry of the cell: still conforming
   const std::array<std::size_t, 8> twisted = {{w[0], w[1], w[2], w[3], w[5], w[6], w[7], w[4]}};
   std::copy(twisted.begin(), twisted.end(), v.begin());
-  CHECK(HDM::count_nonconforming_faces(mesh, report) > 0);
+  VVM_CHECK(HDM::count_nonconforming_faces(mesh, report) > 0);
 }
 
 // make_hex_dominant_mesh_3 on the cube [-1, 1]^3 with the identity field: the cubic lattice
 // merges into hexahedra, the cells are valid and partition the tets
-void test_make_hex_dominant_mesh_on_cube()
-{
-  Surface_mesh surface;
-  CHECK(CGAL::IO::read_polygon_mesh(std::string(VVM_DATA_DIR) + "/cube.off", surface));
-  Cube_domain domain(surface);
-  domain.detect_features(60);
-  HDM::Hex_dominant_report report;
-  std::vector<HDM::Hex_dominant_stage> stages;
-  const Mesh mesh = CGAL::make_hex_dominant_mesh_3<Cube_c3t3>(
-      domain, Constant_field(),
-      TLM::parameters::edge_length(0.25, HDM::parameters::hex_dominant_report(&report,
-          HDM::parameters::stage_visitor([&](HDM::Hex_dominant_stage s, double) { stages.push_back(s); },
-              TLM::parameters::number_of_threads(2, CGAL::parameters::random_seed(3u))))));
-  const HDM::Hex_dominant_statistics s = HDM::hex_dominant_statistics(mesh, {}, &report.merge);
-  std::cout << "make_hex_dominant_mesh_3, cube, l* 0.25: " << report.number_of_particles << " particles, "
-            << report.merge.number_of_tets << " tets -> " << s.number_of_hexahedra << " hex, " << s.number_of_prisms
-            << " prisms, " << s.number_of_pyramids << " pyramids, " << s.number_of_tetrahedra << " tets; H_vol "
-            << s.hexahedron_volume_percent << "%, SJ min/mean " << s.scaled_jacobian_min << "/" << s.scaled_jacobian_mean
-            << ", volume " << s.total_volume << ", times " << report.particle_time << " + " << report.tetrahedra_time << " + "
-            << report.merge_time << " s\n";
-  CHECK(stages.size() == 3 && stages[0] == HDM::Hex_dominant_stage::PARTICLES && stages[2] == HDM::Hex_dominant_stage::MERGING);
-  CHECK(s.number_of_inverted_cells == 0 && s.number_of_nonconforming_faces == 0);
-  CHECK(s.hexahedron_volume_percent > 90);
-  CHECK(s.scaled_jacobian_min > 0.5);
-  CHECK(std::abs(s.total_volume - 8.) < 0.08); // the particles' hull on the cube's surface
-  for(const auto& c : mesh.cells) CHECK(c.subdomain_index == 1);
 
-  CHECK(throws([&] { CGAL::make_hex_dominant_mesh_3<Cube_c3t3>(domain, Constant_field(), TLM::parameters::lattice(TLM::Lattice_type::BCC)); }));
-  CHECK(throws([&] { CGAL::make_hex_dominant_mesh_3<Cube_c3t3>(domain, Constant_field(), TLM::parameters::edge_length(-1.)); }));
-  CHECK(throws([&] { CGAL::make_hex_dominant_mesh_3<Cube_c3t3>(domain, Constant_field(), TLM::parameters::edge_length(1e-5)); }));
-  CHECK(throws([&] { CGAL::make_hex_dominant_mesh_3<Cube_c3t3>(domain, Constant_field(), HDM::parameters::quality_bound(2.)); }));
-}
-
-// make_hex_dominant_mesh_3 on the cube at 5,832 = 18^3 particles, with the default levels: the
-// cube wants 17 cells across, which a lattice refined once from 2 l* cannot have (it left a
-// dislocation line of prisms and tets); the lattice must come out whole, all-hex, filling the cube
-void test_all_hex_cube_at_odd_layer_count()
-{
-  Surface_mesh surface;
-  CHECK(CGAL::IO::read_polygon_mesh(std::string(VVM_DATA_DIR) + "/cube.off", surface));
-  Cube_domain domain(surface);
-  domain.detect_features(60);
-  HDM::Hex_dominant_report report;
-  const Mesh mesh = CGAL::make_hex_dominant_mesh_3<Cube_c3t3>(
-      domain, Constant_field(),
-      TLM::parameters::number_of_particles(std::size_t(5832), HDM::parameters::hex_dominant_report(&report,
-          TLM::parameters::number_of_threads(2))));
-  const HDM::Hex_dominant_statistics s = HDM::hex_dominant_statistics(mesh, {}, &report.merge);
-  std::cout << "make_hex_dominant_mesh_3, cube, 5832 particles asked: " << report.number_of_particles << " particles, "
-            << s.number_of_hexahedra << " hex, " << s.number_of_prisms << " prisms, " << s.number_of_pyramids
-            << " pyramids, " << s.number_of_tetrahedra << " tets; H_vol " << s.hexahedron_volume_percent << "%, SJ min "
-            << s.scaled_jacobian_min << "\n";
-  CHECK(s.number_of_hexahedra > 0 && s.number_of_prisms + s.number_of_pyramids + s.number_of_tetrahedra == 0);
-  CHECK(s.hexahedron_volume_percent > 99.999);
-  CHECK(std::abs(s.total_volume - 8.) < 0.08);
-  CHECK(s.scaled_jacobian_min > 0.9);
-  CHECK(s.number_of_inverted_cells == 0 && s.number_of_nonconforming_faces == 0);
-}
-
-// the Euclidean Delaunay tets of a perturbed grid of 4 x 1 x 1 boxes cross the boxes; the
-// flips towards the Delaunay tets in the space of T = diag(4, 1, 1) let more of them merge,
-// keep a valid partition, and end at a fixed point
 void test_metric_flips()
 {
   CGAL::Random random(11);
@@ -562,195 +419,46 @@ void test_metric_flips()
   // Lawson's flips can get stuck in 3D (here at 280 of 343): make_hex_dominant_mesh_3 starts
   // from the Delaunay tets of the points mapped by the field's mean metric, exact for a
   // constant field, and flips only for the variation of the field
-  CHECK(done > 0 && after > before);
-  CHECK(tr.tds().is_valid());
+  VVM_CHECK(done > 0 && after > before);
+  VVM_CHECK(tr.tds().is_valid());
   std::size_t positive = 0;
   for(auto c : tr.finite_cell_handles()) positive += tr.tetrahedron(c).orientation() == CGAL::POSITIVE;
-  CHECK(positive == tr.number_of_finite_cells());
+  VVM_CHECK(positive == tr.number_of_finite_cells());
   HDM::Hex_dominant_merge_report report;
   const Mesh mesh = CGAL::tets_to_hex_dominant(tr, HDM::parameters::frame_field(field, HDM::parameters::merge_report(&report)));
   check_partition(mesh, report, tr, 0.02);
   // a second run finds nothing left to flip
-  CHECK(flips.run(100000) == 0);
+  VVM_CHECK(flips.run(100000) == 0);
 }
 
 // make_hex_dominant_mesh_3 on the warped cube T [-1, 1]^3 of the shear T of Fig. 4.15e: its
 // faces are lattice planes, and the tets (Delaunay of the particles mapped into the field's
 // space) merge into hexahedra only
-void test_make_hex_dominant_mesh_on_warped_cube()
-{
-  Surface_mesh surface;
-  CHECK(CGAL::IO::read_polygon_mesh(std::string(VVM_DATA_DIR) + "/cube.off", surface));
-  Eigen::Matrix3d T;
-  T << 1, 1, 0,
-       0, 2, 0,
-       0, 0, 1;
-  T /= std::cbrt(T.determinant());
-  for(auto v : surface.vertices()) {
-    const Point_3& p = surface.point(v);
-    const Eigen::Vector3d x = T * Eigen::Vector3d(p.x(), p.y(), p.z());
-    surface.point(v) = Point_3(x[0], x[1], x[2]);
-  }
-  Cube_domain domain(surface);
-  domain.detect_features(60);
-  HDM::Hex_dominant_report report;
-  const Constant_field field(T);
-  const Mesh mesh = CGAL::make_hex_dominant_mesh_3<Cube_c3t3>(
-      domain, field, TLM::parameters::edge_length(0.25, HDM::parameters::hex_dominant_report(&report,
-          TLM::parameters::number_of_threads(2, CGAL::parameters::random_seed(1u)))));
-  const HDM::Hex_dominant_statistics s = HDM::hex_dominant_statistics(
-      mesh, [&](const Eigen::Vector3d&) { return field.B(Point_3(0, 0, 0)); }, &report.merge);
-  std::cout << "make_hex_dominant_mesh_3, warped cube (shear), l* 0.25: " << report.number_of_particles << " particles, "
-            << report.number_of_metric_flips << " metric flips -> " << s.number_of_hexahedra << " hex, "
-            << mesh.cells.size() - s.number_of_hexahedra << " other cells; H_vol " << s.hexahedron_volume_percent
-            << "%, SJ min " << s.scaled_jacobian_min << "\n";
-  CHECK(s.number_of_inverted_cells == 0 && s.number_of_nonconforming_faces == 0);
-  CHECK(s.hexahedron_volume_percent > 99.);
-  CHECK(s.scaled_jacobian_min > 0.9);
-}
-
-// a face of the cube bent outward along its diagonal 1-2, split by the hexahedron's tets
-// along 0-3: Delaunay puts the flat tet 0123 on it, outside the six tets. The hexahedron
-// takes it in; a tet on the face that is not flat stays a tet.
-void test_flat_tet_on_boundary_quad()
-{
-  for(double bend : {0.02, 0.4}) {
-    std::vector<Point_3> corners;
-    for(int c = 0; c < 8; ++c) corners.emplace_back(c & 1, (c >> 1) & 1, (c >> 2) & 1);
-    corners[1] = Point_3(1, 0, -bend);
-    corners[2] = Point_3(0, 1, -bend);
-    const std::vector<std::array<std::size_t, 4>> tets = {
-        {{0, 1, 3, 7}}, {{0, 1, 5, 7}}, {{0, 2, 3, 7}}, {{0, 2, 6, 7}}, {{0, 4, 5, 7}}, {{0, 4, 6, 7}}, {{0, 1, 2, 3}}};
-    HDM::Hex_dominant_merge_report report;
-    const Mesh mesh = CGAL::tets_to_hex_dominant(corners, tets, {}, HDM::parameters::quality_bound(0., HDM::parameters::merge_report(&report)));
-    std::vector<int> corner_of_point(8);
-    for(int c = 0; c < 8; ++c) corner_of_point[std::size_t(c)] = c;
-    const HDM::Hex_dominant_statistics s = HDM::hex_dominant_statistics(mesh, nullptr, &report);
-    std::vector<int> uses(tets.size(), 0);
-    for(const auto& c : report.cell_tets)
-      for(std::size_t t : c) ++uses[t];
-    std::cout << "flat tet on a boundary quad (bend " << bend << "): " << mesh.cells.size() << " cells, "
-              << report.number_of_flat_tets_taken_in << " flat tet taken in\n";
-    CHECK(mesh.cells[0].type == CGAL::Hex_dominant_cell_type::HEXAHEDRON &&
-          has_cube_corner_order(mesh.cells[0], corner_of_point));
-    CHECK(s.number_of_inverted_cells == 0 && s.number_of_nonconforming_faces == 0);
-    CHECK(std::count(uses.begin(), uses.end(), 1) == std::ptrdiff_t(tets.size())); // a partition of the tets
-    if(bend < 0.1)
-      CHECK(mesh.cells.size() == 1 && report.cell_tets[0].size() == 7 && report.number_of_flat_tets_taken_in == 1);
-    else
-      CHECK(mesh.cells.size() == 2 && report.cell_tets[0].size() == 6 && report.number_of_flat_tets_taken_in == 0);
-  }
-}
-
-// make_hex_dominant_mesh_3 on [0.1, 1.1]^3 with Fig. 4.8's field T = diag(1.0125 -
-// exp(-|x - 0.6|), 1, 1) (Fig. 4.15d): near x = 0.6 the lattice's cells are 80 times thinner
-// along x than across, flat in Euclidean space. Only in the field's space are the boundary
-// cells not flat; measured in Euclidean space, those along the cube's edges were peeled off
-// as flat surface cells (95.8% of hexahedron volume at 800 particles)
-void test_make_hex_dominant_mesh_on_graded_cube()
-{
-  Surface_mesh surface;
-  CHECK(CGAL::IO::read_polygon_mesh(std::string(VVM_DATA_DIR) + "/cube.off", surface));
-  for(auto v : surface.vertices()) {
-    const Point_3& p = surface.point(v); // [-1, 1]^3 -> [0.1, 1.1]^3
-    surface.point(v) = Point_3(0.6 + 0.5 * p.x(), 0.6 + 0.5 * p.y(), 0.6 + 0.5 * p.z());
-  }
-  Cube_domain domain(surface);
-  domain.detect_features(60);
-  HDM::Hex_dominant_report report;
-  const auto field = CGAL::Frame_fields::single_direction_anisotropy_frame_field<K>();
-  const Mesh mesh = CGAL::make_hex_dominant_mesh_3<Cube_c3t3>(
-      domain, field, TLM::parameters::number_of_particles(800, HDM::parameters::hex_dominant_report(&report,
-          TLM::parameters::number_of_threads(2, CGAL::parameters::random_seed(1u)))));
-  const HDM::Hex_dominant_statistics s = HDM::hex_dominant_statistics(
-      mesh, [&](const Eigen::Vector3d& x) { return Eigen::Matrix3d(field.B(Point_3(x[0], x[1], x[2]))); }, &report.merge);
-  std::cout << "make_hex_dominant_mesh_3, cube with Fig. 4.8's field, 800 particles asked: " << report.number_of_particles
-            << " particles -> " << s.number_of_hexahedra << " hex, " << mesh.cells.size() - s.number_of_hexahedra
-            << " other cells; H_vol " << s.hexahedron_volume_percent << "%, SJ min " << s.scaled_jacobian_min
-            << ", volume " << s.total_volume << "\n";
-  CHECK(s.number_of_inverted_cells == 0 && s.number_of_nonconforming_faces == 0);
-  CHECK(std::abs(s.total_volume - 1) < 1e-9);
-  CHECK(s.hexahedron_volume_percent > 99.99);
-  CHECK(s.scaled_jacobian_min > 0.9);
-}
-
-// the largest distance from the tets' boundary facets (corners, edge midpoints, centroids) to
-// the surface
-double boundary_facet_distance(const Cube_c3t3& c3t3, const Surface_mesh& surface)
-{
-  typedef CGAL::AABB_face_graph_triangle_primitive<Surface_mesh> Primitive;
-  CGAL::AABB_tree<CGAL::AABB_traits<K, Primitive>> tree(faces(surface).first, faces(surface).second, surface);
-  double d2 = 0;
-  for(auto f = c3t3.facets_in_complex_begin(); f != c3t3.facets_in_complex_end(); ++f) {
-    std::array<Point_3, 3> p;
-    for(int k = 0; k < 3; ++k) p[std::size_t(k)] = f->first->vertex((f->second + k + 1) & 3)->point().point();
-    for(const Point_3& x : {CGAL::centroid(p[0], p[1], p[2]), CGAL::midpoint(p[0], p[1]), CGAL::midpoint(p[1], p[2]),
-                            CGAL::midpoint(p[2], p[0])})
-      d2 = (std::max)(d2, tree.squared_distance(x));
-  }
-  return std::sqrt(d2);
-}
-
-// the boundary refinement of section 4.4.2 on a sphere: surface points are added where the
-// tets' facets cut the sphere too deep, and the facets come closer to it
-void test_boundary_refinement()
-{
-  Surface_mesh surface;
-  CHECK(CGAL::IO::read_polygon_mesh(std::string(VVM_DATA_DIR) + "/sphere966.off", surface));
-  Cube_domain domain(surface);
-  double distance[2] = {0, 0};
-  for(int refine = 0; refine < 2; ++refine) {
-    HDM::Hex_dominant_report report;
-    Cube_c3t3 tets;
-    const double threshold = refine ? 0.5 * distance[0] : 0.;
-    const Mesh mesh = CGAL::make_hex_dominant_mesh_3<Cube_c3t3>(
-        domain, Constant_field(), TLM::parameters::edge_length(2.5, HDM::parameters::boundary_distance(threshold,
-            HDM::parameters::hex_dominant_report(&report, HDM::parameters::tetrahedral_mesh(&tets,
-                TLM::parameters::number_of_threads(2, CGAL::parameters::random_seed(2u)))))));
-    distance[refine] = boundary_facet_distance(tets, surface);
-    const HDM::Hex_dominant_statistics s = HDM::hex_dominant_statistics(mesh, {}, &report.merge);
-    std::cout << "sphere of radius 10, l* 2.5, boundary distance " << threshold << ": " << report.number_of_boundary_points
-              << " surface points added, facets within " << distance[refine] << " of the sphere; " << s.number_of_hexahedra
-              << " hex, H_vol " << s.hexahedron_volume_percent << "%\n";
-    CHECK(s.number_of_inverted_cells == 0 && s.number_of_nonconforming_faces == 0);
-    CHECK((report.number_of_boundary_points > 0) == (refine == 1));
-  }
-  CHECK(distance[1] < 0.75 * distance[0]);
-  CHECK(throws([&] { CGAL::make_hex_dominant_mesh_3<Cube_c3t3>(domain, Constant_field(), HDM::parameters::boundary_distance(-1.)); }));
-  CHECK(throws([&] { CGAL::make_hex_dominant_mesh_3<Cube_c3t3>(domain, Constant_field(), HDM::parameters::boundary_distance(std::nan(""))); }));
-}
 
 void test_bad_input()
 {
   std::vector<Point_3> p = {Point_3(0, 0, 0), Point_3(1, 0, 0), Point_3(0, 1, 0), Point_3(0, 0, 1)};
   Delaunay tr(p.begin(), p.end());
-  CHECK(throws([&] { CGAL::tets_to_hex_dominant(tr, HDM::parameters::quality_bound(1.5)); }));
-  CHECK(throws([&] { CGAL::tets_to_hex_dominant(tr, HDM::parameters::quality_bound(std::nan(""))); }));
-  CHECK(throws([&] { CGAL::tets_to_hex_dominant(tr, CGAL::Tetrahedral_lattice_meshing::parameters::number_of_threads(-1)); }));
+  VVM_CHECK(throws([&] { CGAL::tets_to_hex_dominant(tr, HDM::parameters::quality_bound(1.5)); }));
+  VVM_CHECK(throws([&] { CGAL::tets_to_hex_dominant(tr, HDM::parameters::quality_bound(std::nan(""))); }));
+  VVM_CHECK(throws([&] { CGAL::tets_to_hex_dominant(tr, CGAL::Tetrahedral_lattice_meshing::parameters::number_of_threads(-1)); }));
   Delaunay empty;
-  CHECK(CGAL::tets_to_hex_dominant(empty).cells.empty());
+  VVM_CHECK(CGAL::tets_to_hex_dominant(empty).cells.empty());
 }
+
 
 } // namespace
 
-int main()
+int main(int argc, char** argv)
 {
-  test_cube_triangulations();
-  test_seven_tet_hexahedra();
-  test_prism_and_pyramid();
-  test_cubic_grid();
-  test_cell_scaled_jacobians();
-  test_random_tets();
-  test_nonconforming_detected();
-  test_make_hex_dominant_mesh_on_cube();
-  test_all_hex_cube_at_odd_layer_count();
-  test_metric_flips();
-  test_make_hex_dominant_mesh_on_warped_cube();
-  test_make_hex_dominant_mesh_on_graded_cube();
-  test_flat_tet_on_boundary_quad();
-  test_boundary_refinement();
-  test_bad_input();
-  if(failures) std::cerr << failures << " checks failed\n";
-  else std::cout << "all checks passed\n";
-  return failures ? 1 : 0;
+  return vvm_test::run(argc, argv, "test_hex_dominant_merging", {
+      {"cube_triangulations", test_cube_triangulations},
+      {"seven_tet_hexahedra", test_seven_tet_hexahedra},
+      {"prism_and_pyramid", test_prism_and_pyramid},
+      {"cubic_grid", test_cubic_grid},
+      {"cell_scaled_jacobians", test_cell_scaled_jacobians},
+      {"random_tets", test_random_tets},
+      {"nonconforming_detected", test_nonconforming_detected},
+      {"metric_flips", test_metric_flips},
+      {"bad_input", test_bad_input}});
 }

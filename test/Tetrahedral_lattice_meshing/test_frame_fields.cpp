@@ -9,7 +9,7 @@
 // never increasing, the boundary axes kept exactly, singular curves from cap
 // to cap, no dead end), and the singular edge detector against winding numbers.
 
-#include "test_utilities.h"
+#include "vvm_test.h"
 
 #include <CGAL/Frame_fields/Closed_form_frame_field_3.h>
 #include <CGAL/Frame_fields/Constant_frame_field_3.h>
@@ -873,18 +873,18 @@ void test_singular_curves()
   VVM_CHECK_CLOSE(length, expected, 1e-12);
 }
 
-int main()
+int main(int argc, char** argv)
 {
-  test_spherical_harmonics();
-  test_frame_checks();
-  test_dissertation_fields();
-  test_discrete_fields();
-  test_text_format();
-  test_cube();
-  test_corners_and_solver();
-  test_cylinder();
-  test_ball_smoothing();
-  test_singular_edge_detector();
-  test_singular_curves();
-  return vvm_test::report("test_frame_fields");
+  return vvm_test::run(argc, argv, "test_frame_fields", {
+      {"spherical_harmonics", test_spherical_harmonics},
+      {"frame_checks", test_frame_checks},
+      {"dissertation_fields", test_dissertation_fields},
+      {"discrete_fields", test_discrete_fields},
+      {"text_format", test_text_format},
+      {"cube", test_cube},
+      {"corners_and_solver", test_corners_and_solver},
+      {"cylinder", test_cylinder},
+      {"ball_smoothing", test_ball_smoothing},
+      {"singular_edge_detector", test_singular_edge_detector},
+      {"singular_curves", test_singular_curves}});
 }
