@@ -71,6 +71,26 @@ inline std::string data_file(const std::string& name)
   return std::string(dir) + "/" + name;
 }
 
+// true if `f` throws std::invalid_argument whose message holds `expected_words`; says why not
+template <class F>
+bool throws_invalid_argument(F f, const char* expected_words = "")
+{
+  try {
+    f();
+  } catch(const std::invalid_argument& e) {
+    if(std::string(e.what()).find(expected_words) != std::string::npos) return true;
+    std::cerr << "    message '" << e.what() << "' lacks '" << expected_words << "'\n";
+    return false;
+  } catch(const std::exception& e) {
+    std::cerr << "    not std::invalid_argument: '" << e.what() << "'\n";
+    return false;
+  } catch(...) {
+    return false;
+  }
+  std::cerr << "    no exception (expected one mentioning '" << expected_words << "')\n";
+  return false;
+}
+
 struct Test
 {
   const char* name;

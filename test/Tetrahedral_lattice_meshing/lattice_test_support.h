@@ -75,24 +75,7 @@ inline bool check_less(double a, double b, const char* what, const char* file, i
 }
 #define CHECK_LESS(a, b) check_less((a), (b), #a " < " #b, __FILE__, __LINE__)
 
-template <class F>
-bool throws_invalid_argument(F f, const char* expected_words)
-{
-  try {
-    f();
-  } catch(const std::invalid_argument& e) {
-    if(std::string(e.what()).find(expected_words) != std::string::npos) return true;
-    std::cerr << "    message '" << e.what() << "' lacks '" << expected_words << "'\n";
-    return false;
-  } catch(const std::exception& e) {
-    std::cerr << "    not std::invalid_argument: '" << e.what() << "'\n";
-    return false;
-  } catch(...) {
-    return false;
-  }
-  std::cerr << "    no exception (expected one mentioning '" << expected_words << "')\n";
-  return false;
-}
+using vvm_test::throws_invalid_argument;
 
 const TLM::Lattice_type all_lattices[3] = {TLM::Lattice_type::BCC, TLM::Lattice_type::FCC, TLM::Lattice_type::CUBIC};
 

@@ -55,20 +55,7 @@ namespace FFI = CGAL::Frame_fields::internal;
 
 const double pi = CGAL_PI;
 
-template <class F>
-bool throws_invalid_argument(F f, const char* expected_words = "")
-{
-  try {
-    f();
-  } catch(const std::invalid_argument& e) {
-    if(std::string(e.what()).find(expected_words) != std::string::npos) return true;
-    std::cerr << "    message '" << e.what() << "' lacks '" << expected_words << "'\n";
-    return false;
-  } catch(...) {
-    return false;
-  }
-  return false;
-}
+using vvm_test::throws_invalid_argument;
 
 Eigen::Matrix3d random_rotation(CGAL::Random& r)
 {
