@@ -148,6 +148,8 @@ inline int run(int argc, char** argv, const char* program, std::initializer_list
       t->run();
     } catch(const std::exception& e) {
       check(false, (std::string("no exception escapes; got: ") + e.what()).c_str(), t->name, 0);
+    } catch(...) {
+      check(false, "no exception escapes; got one that is no std::exception", t->name, 0);
     }
     const std::chrono::duration<double> seconds = std::chrono::steady_clock::now() - start;
     const std::size_t checks = passed() + failed() - checks_before;

@@ -159,10 +159,6 @@ struct Flip_fixture
   GSM::internal::Energy_guided_flips<Implicit_c3t3> flips() { return {c3t3, energy, sum, count}; }
 };
 
-// A triangle (a, b, c) pierced by the segment (p, q) at height h: GSM prefers
-// the two tets (a, b, c, p), (a, b, c, q) when h is large (1.2: total energy
-// 2.25 against 7.49) and the three around (p, q) when h is small (0.15: 40.3
-// against 60.6). Starting from the worse one, the flip must be taken.
 // the triangle (a, b, c) pierced by the segment (p, q) at height h, not yet in the complex
 struct Pierced_triangle : Flip_fixture
 {

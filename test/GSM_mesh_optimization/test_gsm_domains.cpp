@@ -1,11 +1,11 @@
 // Copyright (c) 2026 VVM contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// gsm_optimize_mesh_3 on CGAL's other domain kinds: a polyhedral cube with protected
-// features (corners fixed, feature vertices on their edges), parallel sweeps that do not
-// depend on the threads, sizing fields, the boundary's distance to the input surface;
-// two subdomains from a labelled implicit function, a Parallel_tag triangulation, a 3D
-// image and a polyhedral complex.
+// gsm_optimize_mesh_3 beyond the single implicit domain: a polyhedral cube with protected
+// features (corners fixed, feature vertices on their edges); parallel sweeps that do not
+// depend on the threads, sizing fields and the boundary's distance to the input surface
+// (on the implicit sphere and a polyhedral one); two subdomains from a labelled implicit
+// function, a Parallel_tag triangulation, a 3D image and a polyhedral complex.
 
 #include "gsm_test_support.h"
 
@@ -49,8 +49,6 @@ void test_cube_with_features()
   VVM_CHECK(on_edges && curve_moved);
   VVM_CHECK(on_faces && surface_moved);
 }
-
-
 
 // Parallel sweeps are deterministic: the batches do not depend on the threads.
 // A sizing field matters only up to a constant factor (fitted to the vertex

@@ -83,7 +83,10 @@ void test_energies()
   }
 }
 
-
+// A triangle (a, b, c) pierced by the segment (p, q) at height h: GSM prefers
+// the two tets (a, b, c, p), (a, b, c, q) when h is large (1.2: total energy
+// 2.25 against 7.49) and the three around (p, q) when h is small (0.15: 40.3
+// against 60.6). Starting from the worse one, the flip must be taken.
 void check_flip_from_worse(double h, bool expect_three)
 {
   Pierced_triangle f(h);

@@ -73,8 +73,6 @@ bool throws(F f)
   return false;
 }
 
-// the 48 symmetries of the cube, as permutations of the corner numbers x + 2y + 4z
-
 // the hexahedron's edges (VTK order) join cube corners that differ in one coordinate
 bool has_cube_corner_order(const Mesh::Cell& c, const std::vector<int>& corner_of_point)
 {

@@ -18,6 +18,7 @@
 
 namespace {
 
+// the 48 symmetries of the cube, as permutations of the corner numbers x + 2y + 4z
 std::vector<std::array<int, 8>> cube_symmetries()
 {
   std::vector<std::array<int, 8>> out;
@@ -389,9 +390,9 @@ void test_nonconforming_detected()
   VVM_CHECK(HDM::count_nonconforming_faces(mesh, report) > 0);
 }
 
-// make_hex_dominant_mesh_3 on the cube [-1, 1]^3 with the identity field: the cubic lattice
-// merges into hexahedra, the cells are valid and partition the tets
-
+// the Euclidean Delaunay tets of a perturbed grid of 4 x 1 x 1 boxes cross the boxes; the
+// flips towards the Delaunay tets in the space of T = diag(4, 1, 1) let more of them merge,
+// keep a valid partition, and end at a fixed point
 void test_metric_flips()
 {
   CGAL::Random random(11);
@@ -431,10 +432,7 @@ void test_metric_flips()
   VVM_CHECK(flips.run(100000) == 0);
 }
 
-// make_hex_dominant_mesh_3 on the warped cube T [-1, 1]^3 of the shear T of Fig. 4.15e: its
-// faces are lattice planes, and the tets (Delaunay of the particles mapped into the field's
-// space) merge into hexahedra only
-
+// bad parameters of tets_to_hex_dominant throw; no tets give no cells
 void test_bad_input()
 {
   std::vector<Point_3> p = {Point_3(0, 0, 0), Point_3(1, 0, 0), Point_3(0, 1, 0), Point_3(0, 0, 1)};

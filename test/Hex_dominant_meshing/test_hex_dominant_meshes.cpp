@@ -5,12 +5,14 @@
 // also at an odd layer count), a warped cube with a shear field and a cube with Fig. 4.8's
 // field (cells 80 times thinner along x than across) give hexahedra only; a flat tet on a
 // hexahedron's boundary quad is taken in by it; the boundary refinement brings the tets'
-// boundary closer to a sphere.
+// boundary closer to a sphere; bad parameters of make_hex_dominant_mesh_3 throw.
 
 #include "hex_dominant_test_support.h"
 
 namespace {
 
+// make_hex_dominant_mesh_3 on the cube [-1, 1]^3 with the identity field: the cubic lattice
+// merges into hexahedra, the cells are valid and partition the tets
 void test_make_hex_dominant_mesh_on_cube()
 {
   Surface_mesh surface;
@@ -70,10 +72,9 @@ void test_all_hex_cube_at_odd_layer_count()
   VVM_CHECK(s.number_of_inverted_cells == 0 && s.number_of_nonconforming_faces == 0);
 }
 
-// the Euclidean Delaunay tets of a perturbed grid of 4 x 1 x 1 boxes cross the boxes; the
-// flips towards the Delaunay tets in the space of T = diag(4, 1, 1) let more of them merge,
-// keep a valid partition, and end at a fixed point
-
+// make_hex_dominant_mesh_3 on the warped cube T [-1, 1]^3 of the shear T of Fig. 4.15e: its
+// faces are lattice planes, and the tets (Delaunay of the particles mapped into the field's
+// space) merge into hexahedra only
 void test_make_hex_dominant_mesh_on_warped_cube()
 {
   Surface_mesh surface;

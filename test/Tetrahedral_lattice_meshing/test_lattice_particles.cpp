@@ -10,7 +10,7 @@
 
 // ---------------------------------------------------------------------------------------------
 // lattice_particles_3 on the cube [-1, 1]^3 with the identity field, BCC, 1500 particles,
-// with 1 and with 2 threads (computed once, used by tests 4 and 5)
+// with 1 and with 2 threads (computed once per process, for the tests that use them)
 
 struct Cube
 {
