@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # Installs what VVM needs to build, test and benchmark on Debian 12 (bookworm).
 set -euo pipefail
-# gmsh: the hex-dominant I/O test checks and re-saves its .msh with it.
+# gmsh, tetgen: the hex-dominant I/O test and the vvm-mesh tests check and re-save meshes with
+# gmsh; vvm-mesh optimize is tested on meshes written by both.
 # ccache: the build compiles through it when present (CMakeLists.txt).
-packages=(g++ make cmake ccache libcgal-dev libeigen3-dev libtbb-dev libboost-dev liblbfgspp-dev python3-meshio gmsh)
+packages=(g++ make cmake ccache libcgal-dev libeigen3-dev libtbb-dev libboost-dev liblbfgspp-dev python3-meshio gmsh tetgen zlib1g-dev)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "ok installed" || missing+=("$p")

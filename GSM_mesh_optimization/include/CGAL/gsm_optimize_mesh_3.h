@@ -136,13 +136,15 @@ gsm_optimize(C3T3& c3t3, const MeshDomain* domain, bool boundary_fixed, const Na
       choose_parameter(get_parameter(np, GSM::internal_np::convergence_threshold), 1e-4);
   options.freeze_boundary =
       boundary_fixed || choose_parameter(get_parameter(np, GSM::internal_np::freeze_boundary), false);
+  options.boundary_distance = choose_parameter(get_parameter(np, GSM::internal_np::boundary_distance), 0.);
   options.energy = choose_parameter(get_parameter(np, GSM::internal_np::energy),
                                     GSM::Shape_matching_energy::GSM);
   const int threads = choose_parameter(get_parameter(np, GSM::internal_np::number_of_threads), 0);
   if(options.max_rounds < 0 || options.time_limit < 0 || !(options.convergence >= 0) || threads < 0 ||
-     !(options.sliver_bound >= 0 && options.sliver_bound < 70.5) || !(options.mean_angle_moves >= 0))
+     !(options.sliver_bound >= 0 && options.sliver_bound < 70.5) || !(options.mean_angle_moves >= 0) ||
+     !(options.boundary_distance >= 0 && options.boundary_distance < HUGE_VAL))
     throw std::invalid_argument("GSM: negative iteration count, time limit, convergence threshold, "
-                                "thread count or mean-angle threshold, or a sliver bound outside [0, 70.5) degrees");
+                                "thread count, mean-angle threshold or boundary distance, or a sliver bound outside [0, 70.5) degrees");
 
   auto visitor = get_parameter(np, CGAL::internal_np::visitor);
   if constexpr(!std::is_same<decltype(visitor), CGAL::internal_np::Param_not_found>::value)
@@ -288,6 +290,15 @@ gsm_optimize(C3T3& c3t3, const MeshDomain* domain, bool boundary_fixed, const Na
  *       are and no flat boundary cell is peeled: the boundary does not change}
  *     \cgalParamType{bool}
  *     \cgalParamDefault{false}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{GSM_mesh_optimization::parameters::boundary_distance}
+ *     \cgalParamDescription{how far a boundary facet may stray from the domain's surface at least
+ *       (measured along its normal). By default a facet may stray as far as the input mesh's
+ *       facets did: a mesh made by `make_mesh_3()` keeps its `facet_distance`, and a mesh whose
+ *       boundary lies on the surface (`Complex_from_tetrahedra_3`) keeps it there, its boundary
+ *       vertices sliding on flat parts only. A positive distance lets them slide on curved parts}
+ *     \cgalParamType{`double`, non-negative}
+ *     \cgalParamDefault{0}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{GSM_mesh_optimization::parameters::sliver_bound}
  *     \cgalParamDescription{the smallest dihedral angle, in degrees, sought by the final polishing

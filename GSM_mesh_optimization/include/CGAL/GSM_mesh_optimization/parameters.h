@@ -34,6 +34,7 @@ enum uniform_sizing_t { uniform_sizing };
 enum shortest_polishing_moves_t { shortest_polishing_moves };
 enum mean_angle_moves_t { mean_angle_moves };
 enum vertex_move_cost_t { vertex_move_cost };
+enum boundary_distance_t { boundary_distance };
 
 } // namespace internal_np
 
@@ -43,6 +44,9 @@ namespace parameters {
 CGAL_VVM_ADD_NAMED_PARAMETER(energy)
 /// `bool`: keep every surface, feature-curve and corner vertex where it is (default `false`)
 CGAL_VVM_ADD_NAMED_PARAMETER(freeze_boundary)
+/// `double`: how far the boundary facets may stray from the domain's surface at least (default 0:
+/// as far as the input mesh's did; a mesh whose boundary lies on the surface keeps it there)
+CGAL_VVM_ADD_NAMED_PARAMETER(boundary_distance)
 /// a callable `double(const Point_3&)`: the target edge length at a point (adaptive meshing)
 CGAL_VVM_ADD_NAMED_PARAMETER(sizing_field)
 /// a callable `Eigen::Matrix3d(const Point_3&)`: the anisotropic metric M(x), symmetric positive definite

@@ -92,7 +92,8 @@ public:
   /// the fine grid too
   static constexpr double fine_check_share = 0.8;
 
-  Boundary_fidelity(const C3T3& c3t3, const MeshDomain* domain) : domain_(domain)
+  /// `least_bound`: any facet may stray at least this far (a caller's tolerance)
+  Boundary_fidelity(const C3T3& c3t3, const MeshDomain* domain, double least_bound = 0) : domain_(domain)
   {
     const Tr& tr = c3t3.triangulation();
     std::vector<Initial_facet> facets;
@@ -126,8 +127,9 @@ public:
     for(int g = 0; g < 2; ++g) {
       const auto q = deviations[g].begin() + std::ptrdiff_t(floor_quantile * double(deviations[g].size() - 1));
       std::nth_element(deviations[g].begin(), q, deviations[g].end());
-      floors_[g] = (std::max)(*q, floor_share * largest);
+      floors_[g] = (std::max)({*q, floor_share * largest, least_bound});
     }
+    largest = (std::max)(largest, least_bound);
     // the vertices of the facets over the floor may let their facets stray as far as these did,
     // up to the largest distance
     for(const Initial_facet& e : facets)

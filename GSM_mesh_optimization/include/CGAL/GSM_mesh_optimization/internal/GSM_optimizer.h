@@ -74,6 +74,7 @@ struct GSM_options
   bool shortest_moves = false; // the polishing's max-min moves: the shortest step to the bound
   double mean_angle_moves = 0;  // degrees: after the polishing, the stars with a cell under it raise their sum
   bool freeze_boundary = false;
+  double boundary_distance = 0; // the least bound of the boundary-fidelity guard
   bool verbose = false;
   Shape_matching_energy energy = Shape_matching_energy::GSM;
   std::function<void(const Round_report&)> visitor;
@@ -93,7 +94,7 @@ public:
   GSM_optimizer(C3T3& c3t3, const MeshDomain* domain, const Metric_field& metric,
                 const GSM_options& options, std::shared_ptr<Vertex_sizes<Tr>> sizing = nullptr)
     : c3t3_(c3t3), options_(options), energy_(c3t3, metric, options.energy, std::move(sizing)),
-      smoother_(c3t3, domain, energy_, options.freeze_boundary)
+      smoother_(c3t3, domain, energy_, options.freeze_boundary, options.boundary_distance)
   {}
 
   /// what a vertex at a position costs the mean-angle moves, in degrees

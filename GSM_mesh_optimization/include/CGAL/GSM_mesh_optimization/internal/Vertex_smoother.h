@@ -4,9 +4,11 @@
 // GSM vertex smoothing (dissertation section 3.3.1 and 3.3.3): per vertex, a
 // Newton direction h^-1 g of the energy of its incident cells and a
 // backtracking line search from the largest move its one-ring allows. A move is
-// kept only if no cell inverts (nor the convex hull stops being convex) and the
-// one-ring energy decreases. Surface vertices move in their tangent plane and
-// are projected back onto the domain's surface, on their own patch; feature
+// kept only if no cell inverts (nor the convex hull stops being convex; on a
+// mesh whose boundary is not a convex hull, nor two boundary facets close up
+// on an edge, which would fold the boundary) and the one-ring energy
+// decreases. Surface vertices move in their tangent plane and are projected
+// back onto the domain's surface, on their own patch; feature
 // curve vertices move along their curve; corners never move. A boundary vertex
 // moves only where its facets stray from the surface no further than the
 // initial mesh's did (Boundary_fidelity.h).
@@ -93,12 +95,33 @@ public:
     }
   };
 
-  Vertex_smoother(C3T3& c3t3, const MeshDomain* domain, const Energy& energy, bool freeze_boundary)
+  Vertex_smoother(C3T3& c3t3, const MeshDomain* domain, const Energy& energy, bool freeze_boundary,
+                  double boundary_distance = 0)
     : c3t3_(c3t3), tr_(c3t3.triangulation()), domain_(domain), energy_(energy),
       freeze_boundary_(freeze_boundary)
   {
     if constexpr(!std::is_void<MeshDomain>::value)
-      if(lowest_movable_dimension() < 3) fidelity_.emplace(c3t3, domain);
+      if(lowest_movable_dimension() < 3) fidelity_.emplace(c3t3, domain, boundary_distance);
+    convex_hull_ = hull_is_locally_convex();
+  }
+
+  /// whether the triangulation's boundary is convex, as a Delaunay mesh's (else it is the
+  /// boundary of a mesh made elsewhere, Complex_from_tetrahedra_3)
+  bool convex_hull() const { return convex_hull_; }
+
+  /// the smallest angle, in radians, between two boundary facets around their edge that a
+  /// move may close down to, on a boundary that is not a convex hull: smaller, and the
+  /// boundary folds at the edge (or nearly: a slit of outside space)
+  static constexpr double min_boundary_opening = 5. * CGAL_PI / 180.;
+
+  /// the angle in [0, pi] between the half-planes of the triangles (a, b, c) and (a, b, d)
+  /// around their edge (a, b): 0 when they close up, pi when they are flat
+  static double boundary_opening(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c,
+                                 const Eigen::Vector3d& d)
+  {
+    const Eigen::Vector3d e = (b - a).normalized();
+    const Eigen::Vector3d u = (c - a) - e * e.dot(c - a), w = (d - a) - e * e.dot(d - a);
+    return std::atan2(u.cross(w).norm(), u.dot(w));
   }
 
   /// lowest vertex dimension that may move (3: interior only)
@@ -265,7 +288,8 @@ public:
     return false;
   }
 
-  /// no finite incident cell inverts, and the convex hull stays convex around `v`
+  /// no finite incident cell inverts, and the convex hull stays convex around `v` (on a
+  /// boundary that is not a convex hull: no two boundary facets close up on an edge)
   bool is_valid_position(const Ring& r, const Bare_point& p) const
   {
     for(const Cell_handle& c : r.finite_cells) {
@@ -291,8 +315,23 @@ public:
         if(j == inf) continue;
         const Cell_handle nb = c->neighbor(j);
         const Vertex_handle d = nb->vertex(nb->index(c));
-        const CGAL::Orientation o = CGAL::orientation(f[0], f[1], f[2], d == r.v ? p : bare(d));
-        if(o != side && o != CGAL::COPLANAR) return false;
+        if(convex_hull_) {
+          const CGAL::Orientation o = CGAL::orientation(f[0], f[1], f[2], d == r.v ? p : bare(d));
+          if(o != side && o != CGAL::COPLANAR) return false;
+          continue;
+        }
+        // the facet's edge opposite its vertex j, and the two apexes around it
+        std::array<Vertex_handle, 2> edge;
+        for(int k = 0, n = 0; k < 4; ++k)
+          if(k != inf && k != j) edge[std::size_t(n++)] = c->vertex(k);
+        const auto at = [&](const Vertex_handle& u, bool moved) {
+          return moved && u == r.v ? Energy::to_eigen(p) : energy_.position(u);
+        };
+        const auto opening = [&](bool moved) {
+          return boundary_opening(at(edge[0], moved), at(edge[1], moved), at(c->vertex(j), moved), at(d, moved));
+        };
+        const double after = opening(true);
+        if(after < min_boundary_opening && after < opening(false)) return false;
       }
     }
     return true;
@@ -398,13 +437,16 @@ public:
       return fidelity_ && fidelity_->has_own_bound(v);
   }
 
-  /// the facets of a boundary vertex at `p` stray no further from the surface than the initial ones
+  /// the facets of a boundary vertex at `p` stray no further from the surface than the initial
+  /// ones, and the edges of a feature-curve vertex no further from the curve than its bound
+  /// (or than they do now)
   bool keeps_boundary_faithful(const Ring& r, const Bare_point& p) const
   {
     if constexpr(std::is_void<MeshDomain>::value)
       return r.dimension == 3; // the boundary of a bare triangulation does not move
     else {
       if(r.dimension == 3) return true;
+      if(r.dimension == 1 && !keeps_curve_faithful(r, p)) return false;
       for(const Facet& f : r.surface_facets) {
         typename Fidelity::Triangle t;
         std::array<Vertex_handle, 3> vs;
@@ -572,11 +614,78 @@ private:
     }
   }
 
+  // The edges of a feature-curve vertex are chords of the curve: where the curve bends between
+  // two vertices, the chord cuts the corner, and the facets' measure along their normals misses
+  // it (beside a feature edge the normal lines leave the patch). So the arc between the vertex
+  // and each curve neighbour is sampled, and its distance to the chord bounded.
+  static constexpr int curve_samples = 8;
+
+  // the largest distance from the curve between `o` and `q` (its arc, sampled) to the chord
+  double chord_deviation(const Curve_index& curve, const Bare_point& o, const Bare_point& q) const
+  {
+    if constexpr(Mesh_3::internal::Has_features<MeshDomain>::value) {
+      const Eigen::Vector3d eo = Energy::to_eigen(o), eq = Energy::to_eigen(q);
+      const double chord = (eq - eo).norm();
+      if(!(chord > 0)) return 0;
+      double sign;
+      if(domain_->is_loop(curve))
+        sign = (Energy::to_eigen(domain_->construct_point_on_curve(o, curve, 0.01 * chord)) - eo).dot(eq - eo) > 0 ? 1 : -1;
+      else
+        sign = double(int(domain_->distance_sign(o, q, curve)));
+      if(sign == 0) return 0;
+      double d = 0;
+      const Eigen::Vector3d u = (eq - eo) / chord;
+      for(int k = 1; k < curve_samples; ++k) {
+        const Eigen::Vector3d x =
+            Energy::to_eigen(domain_->construct_point_on_curve(o, curve, sign * chord * k / curve_samples)) - eo;
+        const double t = std::clamp(x.dot(u), 0., chord);
+        d = (std::max)(d, (x - t * u).norm());
+      }
+      return d;
+    } else {
+      CGAL_USE(curve);
+      CGAL_USE(o);
+      CGAL_USE(q);
+      return 0;
+    }
+  }
+
+  bool keeps_curve_faithful(const Ring& r, const Bare_point& p) const
+  {
+    const double bound = boundary_bound(r.v);
+    for(const Vertex_handle& n : r.curve_neighbors) {
+      const double after = chord_deviation(r.curve, p, bare(n));
+      if(after > bound && after > chord_deviation(r.curve, bare(r.v), bare(n))) return false;
+    }
+    return true;
+  }
+
+  // every hull vertex next to a hull facet is on its cell's side or on its plane
+  bool hull_is_locally_convex() const
+  {
+    for(auto c = tr_.all_cells_begin(); c != tr_.all_cells_end(); ++c) {
+      if(!tr_.is_infinite(c)) continue;
+      const int inf = c->index(tr_.infinite_vertex());
+      Bare_point f[3];
+      for(int k = 0; k < 3; ++k) f[k] = bare(c->vertex((inf + 1 + k) & 3));
+      const Cell_handle inside = c->neighbor(inf);
+      const CGAL::Orientation side = CGAL::orientation(f[0], f[1], f[2], bare(inside->vertex(inside->index(c))));
+      for(int j = 0; j < 4; ++j) {
+        if(j == inf) continue;
+        const Cell_handle nb = c->neighbor(j);
+        const CGAL::Orientation o = CGAL::orientation(f[0], f[1], f[2], bare(nb->vertex(nb->index(c))));
+        if(o != side && o != CGAL::COPLANAR) return false;
+      }
+    }
+    return true;
+  }
+
   C3T3& c3t3_;
   Tr& tr_;
   const MeshDomain* domain_;
   const Energy& energy_;
   bool freeze_boundary_;
+  bool convex_hull_ = true;
   std::function<double(const Vertex_handle&, const Eigen::Vector3d&)> move_cost_;
   std::optional<Fidelity> fidelity_; // when the boundary may move
 };

@@ -1,0 +1,406 @@
+#!/usr/bin/env python3
+# Copyright (c) 2026 VVM contributors.
+# SPDX-License-Identifier: GPL-3.0-or-later
+"""Runs vvm-mesh on small bundled inputs and checks what it writes.
+
+usage: check_vvm_mesh.py --vvm-mesh EXE --data DIR --work DIR [--tetgen EXE] [--gmsh EXE] CHECK
+       check_vvm_mesh.py --registered CHECK...   (fails if a check is not in the list)
+
+Each CHECK is one CTest entry (vvm_mesh.CHECK). Meshes are read back with meshio
+(counts, labels, orientation of every tetrahedron) and re-saved by Gmsh; the
+optimize checks start from meshes written by Debian's TetGen and Gmsh.
+"""
+
+import argparse
+import json
+import os
+import shutil
+import struct
+import subprocess
+import sys
+
+import meshio
+import numpy as np
+
+ARGS = None
+
+
+def fail(message):
+    print("FAILED: " + message)
+    sys.exit(1)
+
+
+def require(condition, message):
+    if not condition:
+        fail(message)
+
+
+def work(name):
+    return os.path.join(ARGS.work, name)
+
+
+def data(name):
+    return os.path.join(ARGS.data, name)
+
+
+def run(args, expect=0):
+    """runs vvm-mesh; returns (stdout, stderr); fails unless it exits with `expect`"""
+    result = subprocess.run([ARGS.vvm_mesh] + args, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    require(result.returncode == expect,
+            f"vvm-mesh {' '.join(args)} exited with {result.returncode}, not {expect}:\n"
+            f"{result.stdout}\n{result.stderr}")
+    return result.stdout, result.stderr
+
+
+def run_tool(args):
+    result = subprocess.run(args, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+    require(result.returncode == 0, f"{' '.join(args)} exited with {result.returncode}:\n{result.stdout}")
+    return result.stdout
+
+
+def report(path):
+    with open(path) as f:
+        return json.loads(f.readline())
+
+
+def signed_volumes(points, tets):
+    p = points[tets]
+    return np.einsum("ij,ij->i", np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0]), p[:, 3] - p[:, 0]) / 6.0
+
+
+def labels_of(mesh):
+    """the subdomain label of each cell block, whatever the format calls it"""
+    for key in ("gmsh:physical", "medit:ref", "subdomain"):
+        if key in mesh.cell_data:
+            return mesh.cell_data[key]
+    fail(f"no subdomain labels in {list(mesh.cell_data)}")
+
+
+def verify_tet_file(path, expected):
+    """counts, labels and orientation of a tet mesh file against the JSON report `expected`"""
+    mesh = meshio.read(path)
+    require(all(b.type == "tetra" for b in mesh.cells if b.type not in ("triangle", "line", "vertex")),
+            f"{path}: cells other than tetrahedra")
+    tets = np.concatenate([b.data for b in mesh.cells if b.type == "tetra"])
+    labels = np.concatenate([l for b, l in zip(mesh.cells, labels_of(mesh)) if b.type == "tetra"])
+    require(len(tets) == expected["n_tets"], f"{path}: {len(tets)} tets, the report says {expected['n_tets']}")
+    used = np.unique(tets)
+    require(len(used) == expected["n_vertices"],
+            f"{path}: {len(used)} vertices used, the report says {expected['n_vertices']}")
+    require(sorted(set(labels.tolist())) == expected["labels"],
+            f"{path}: labels {sorted(set(labels.tolist()))}, the report says {expected['labels']}")
+    require((signed_volumes(mesh.points, tets) > 0).all(), f"{path}: a tetrahedron is not positively oriented")
+    return mesh
+
+
+def mesh_volume(path):
+    mesh = meshio.read(path)
+    tets = np.concatenate([b.data for b in mesh.cells if b.type == "tetra"])
+    return abs(signed_volumes(mesh.points, tets).sum())
+
+
+def gmsh_resave(path, expected_cells, expected_labels=None):
+    """Gmsh reads `path` and writes it again as MSH 4.1: the same counts (and labels: its
+    physical groups, or for a MEDIT file, whose references Gmsh makes entities, its entities)"""
+    resaved = path + ".resaved.msh"
+    run_tool([ARGS.gmsh, path, "-save", "-format", "msh41", "-o", resaved])
+    mesh = meshio.read(resaved)
+    volume = ("tetra", "hexahedron", "wedge", "pyramid")
+    counts = {}
+    for b in mesh.cells:
+        if b.type in volume:
+            counts[b.type] = counts.get(b.type, 0) + len(b.data)
+    require(counts == expected_cells, f"Gmsh re-saved {path} with {counts}, expected {expected_cells}")
+    if expected_labels is not None:
+        key = "gmsh:physical" if "gmsh:physical" in mesh.cell_data else "gmsh:geometrical"
+        labels = sorted(set(np.concatenate([l for b, l in zip(mesh.cells, mesh.cell_data[key])
+                                            if b.type in volume]).tolist()))
+        require(labels == expected_labels, f"Gmsh re-saved {path} with labels {labels}, expected {expected_labels}")
+
+
+# ---------------------------------------------------------------------------------------- checks
+
+def check_tet_gsm():
+    out, err = run(["tet", data("sphere966.off"), "-o", work("sphere.msh"), "--vertices", "2000",
+                    "--json", work("sphere.json")])
+    r = report(work("sphere.json"))
+    require(r["method"] == "gsm" and r["n_inverted"] == 0, f"report {r}")
+    require(abs(r["n_vertices"] - 2000) <= 200, f"{r['n_vertices']} vertices for --vertices 2000")
+    require(r["theta_min"] >= 25, f"smallest dihedral angle {r['theta_min']} after GSM")
+    require("smallest dihedral angle" in out and "make_mesh_3: " in err and "gsm: round" in err,
+            f"summary/progress:\n{out}\n{err}")
+    verify_tet_file(work("sphere.msh"), r)
+
+
+def check_tet_perturb_exude():
+    run(["tet", data("sphere966.off"), "-o", work("pe.mesh"), "--vertices", "1000", "--method", "perturb+exude",
+         "--json", work("pe.json"), "--quiet"])
+    r = report(work("pe.json"))
+    require(r["method"] == "perturb+exude" and r["n_inverted"] == 0, f"report {r}")
+    verify_tet_file(work("pe.mesh"), r)
+
+
+def check_tet_lattice():
+    _, err = run(["tet", data("sphere966.off"), "-o", work("bcc.vtu"), "--method", "bcc", "--vertices", "1500",
+                  "--json", work("bcc.json")])
+    r = report(work("bcc.json"))
+    require(r["n_inverted"] == 0 and r["theta_min"] > 5, f"report {r}")
+    require("lattice bcc" in err, f"no particle progress:\n{err}")
+    mesh = verify_tet_file(work("bcc.vtu"), r)
+    require("min_dihedral_angle" in mesh.cell_data and "scaled_jacobian" in mesh.cell_data,
+            f"the VTU has no quality arrays: {list(mesh.cell_data)}")
+    angles = np.concatenate(mesh.cell_data["min_dihedral_angle"])
+    require(abs(angles.min() - r["theta_min"]) < 1e-6, f"VTU min angle {angles.min()} vs {r['theta_min']}")
+
+
+def write_labelled_inr(path, n=24):
+    """a ball of label 1 around a smaller ball of label 2, n^3 voxels of size 0.1"""
+    header = (f"#INRIMAGE-4#{{\nXDIM={n}\nYDIM={n}\nZDIM={n}\nVDIM=1\nTYPE=unsigned fixed\nPIXSIZE=8 bits\n"
+              f"SCALE=2**0\nCPU=decm\nVX=0.1\nVY=0.1\nVZ=0.1\n")
+    header += "\n" * (252 - len(header)) + "##}\n"
+    c = (n - 1) / 2.0
+    z, y, x = np.mgrid[0:n, 0:n, 0:n]
+    r = np.sqrt((x - c) ** 2 + (y - c) ** 2 + (z - c) ** 2)
+    label = np.where(r < 0.25 * n, 2, np.where(r < 0.45 * n, 1, 0)).astype(np.uint8)
+    with open(path, "wb") as f:
+        f.write(header.encode())
+        f.write(label.tobytes())
+
+
+def check_tet_image():
+    write_labelled_inr(work("balls.inr"))
+    run(["tet", work("balls.inr"), "-o", work("balls.mesh"), "--vertices", "1500", "--json", work("balls.json"),
+         "--quiet"])
+    r = report(work("balls.json"))
+    require(r["labels"] == [1, 2] and r["n_inverted"] == 0 and r["theta_min"] >= 20, f"report {r}")
+    verify_tet_file(work("balls.mesh"), r)
+
+
+def check_formats():
+    """one two-label mesh written in the three formats: meshio reads the same, Gmsh re-saves .msh and .mesh"""
+    run(["tet", data("sphere966.off"), "-o", work("sphere.mesh"), "--vertices", "1000", "--quiet"])
+    mesh = meshio.read(work("sphere.mesh"))
+    tets = mesh.cells_dict["tetra"]
+    labels = np.where(mesh.points[tets].mean(axis=1)[:, 0] < 0, 3, 5).astype(np.int64)
+    meshio.write(work("two.mesh"), meshio.Mesh(mesh.points, [("tetra", tets)], cell_data={"medit:ref": [labels]}))
+    volume = {l: signed_volumes(mesh.points, tets[labels == l]).sum() for l in (3, 5)}
+    for extension in (".mesh", ".msh", ".vtu"):
+        run(["optimize", work("two.mesh"), "-o", work("copy" + extension), "--fixed-boundary", "--quiet",
+             "--json", work("copy.json")])
+        r = report(work("copy.json"))
+        require(r["labels"] == [3, 5], f"labels {r['labels']}")
+        copy = verify_tet_file(work("copy" + extension), r)
+        # each label's cells fill the same volume as before (the interface is a fixed boundary)
+        copy_tets = np.concatenate([b.data for b in copy.cells if b.type == "tetra"])
+        copy_labels = np.concatenate([l for b, l in zip(copy.cells, labels_of(copy)) if b.type == "tetra"])
+        for l in (3, 5):
+            v = signed_volumes(copy.points, copy_tets[copy_labels == l]).sum()
+            require(abs(v - volume[l]) <= 1e-6 * abs(volume[l]), f"{extension}: label {l} volume {volume[l]} -> {v}")
+        if extension != ".vtu":  # Gmsh 4.8 does not read VTU
+            gmsh_resave(work("copy" + extension), {"tetra": r["n_tets"]}, [3, 5])
+
+
+def check_hexdom():
+    out, _ = run(["hexdom", data("cube.off"), "-o", work("cube.vtu"), "--particles", "1000", "--json",
+                  work("cube.json"), "--quiet"])
+    r = report(work("cube.json"))
+    require(r["n_hex"] > 0 and r["n_inverted"] == 0 and r["hex_volume_percent"] > 90, f"report {r}")
+    require("hexahedra" in out, f"summary:\n{out}")
+    for extension in (".msh", ".mesh"):
+        run(["hexdom", data("cube.off"), "-o", work("cube" + extension), "--particles", "1000", "--quiet"])
+        mesh = meshio.read(work("cube" + extension))
+        require(len(mesh.cells_dict.get("hexahedron", [])) == r["n_hex"], f"cube{extension}: hexahedra")
+        gmsh_resave(work("cube" + extension), {t: len(c) for t, c in mesh.cells_dict.items()
+                                               if t in ("tetra", "hexahedron", "wedge", "pyramid")})
+    mesh = meshio.read(work("cube.vtu"))
+    require(len(mesh.cells_dict.get("hexahedron", [])) == r["n_hex"], "cube.vtu: hexahedra")
+
+
+def check_field():
+    out, _ = run(["field", data("sphere966.off"), "-o", work("cross.txt"), "--vertices", "1000", "--quiet"])
+    require(os.path.getsize(work("cross.txt")) > 0 and "cross field written" in out, out)
+    run(["tet", data("sphere966.off"), "-o", work("bcc.mesh"), "--method", "bcc", "--vertices", "1000",
+         "--field", work("cross.txt"), "--json", work("bcc.json"), "--quiet"])
+    r = report(work("bcc.json"))
+    require(r["n_inverted"] == 0, f"report {r}")
+
+
+def check_quality():
+    run(["tet", data("sphere966.off"), "-o", work("s.mesh"), "--vertices", "1000", "--quiet", "--json",
+         work("made.json")])
+    out, _ = run(["quality", work("s.mesh"), "--json", work("q.json")])
+    made, q = report(work("made.json")), report(work("q.json"))
+    for key in ("n_vertices", "n_tets", "n_inverted", "n_min_dih_lt30", "labels"):
+        require(made[key] == q[key], f"{key}: {made[key]} when made, {q[key]} read back")
+    require(abs(made["theta_min"] - q["theta_min"]) < 1e-9, "smallest angle read back")
+    require("histogram" in out and "radius ratio" in out, f"quality table:\n{out}")
+
+
+def tetgen_mesh(model):
+    """TetGen's quality mesh of a bundled model (boundary kept), as MEDIT"""
+    shutil.copy(data(model + ".off"), work(model + ".off"))
+    run_tool([ARGS.tetgen, "-pq1.3/15", "-YgQ", work(model + ".off")])
+    return work(model + ".1.mesh")
+
+
+def write_stl(off_path, stl_path):
+    with open(off_path) as f:
+        tokens = [t for line in f for t in line.split("#")[0].split()]
+    require(tokens[0] == "OFF", "not an OFF file")
+    nv, nf = int(tokens[1]), int(tokens[2])
+    v = np.array(tokens[4:4 + 3 * nv], dtype=float).reshape(-1, 3)
+    faces, i = [], 4 + 3 * nv
+    for _ in range(nf):
+        k = int(tokens[i])
+        faces.append([int(t) for t in tokens[i + 1:i + 1 + k]])
+        i += 1 + k
+    meshio.write(stl_path, meshio.Mesh(v, [("triangle", np.array(faces))]), binary=False)
+
+
+def gmsh_mesh(model):
+    """Gmsh's Delaunay mesh of a bundled model's surface, with its own optimizer"""
+    write_stl(data(model + ".off"), work(model + ".stl"))
+    with open(work(model + ".geo"), "w") as f:
+        f.write(f'Merge "{model}.stl";\nSurface Loop(1) = {{1}};\nVolume(1) = {{1}};\nPhysical Volume(7) = {{1}};\n'
+                'Mesh.Optimize = 1;\nMesh.OptimizeThreshold = 0.7;\n')
+    run_tool([ARGS.gmsh, work(model + ".geo"), "-3", "-format", "msh41", "-o", work(model + "_gmsh.msh")])
+    return work(model + "_gmsh.msh")
+
+
+def verify_optimized(source, name, min_angle=25):
+    run(["quality", source, "--json", work(name + "_in.json")])
+    out, _ = run(["optimize", source, "-o", work(name + "_gsm"), "--json", work(name + ".json"), "--quiet"])
+    before, after = report(work(name + "_in.json")), report(work(name + ".json"))
+    extension = os.path.splitext(source)[1]
+    verify_tet_file(work(name + "_gsm" + extension), after)
+    require(after["n_inverted"] == 0, f"{name}: inverted tets")
+    require(after["labels"] == before["labels"], f"{name}: labels {before['labels']} -> {after['labels']}")
+    require(after["theta_min"] >= min_angle and after["theta_min"] > before["theta_min"],
+            f"{name}: smallest angle {before['theta_min']} -> {after['theta_min']}")
+    require(after["n_min_dih_lt30"] < before["n_min_dih_lt30"], f"{name}: tets under 30 not fewer")
+    require(abs(after["n_vertices"] - before["n_vertices"]) <= 0.03 * before["n_vertices"],
+            f"{name}: {before['n_vertices']} -> {after['n_vertices']} vertices")
+    # the guard holds the boundary's facets near the input's boundary (measured on a grid:
+    # a facet beside a feature edge may stray up to twice as far)
+    require(after["boundary_hausdorff"] <= 2 * after["boundary_distance_bound"],
+            f"{name}: boundary moved {after['boundary_hausdorff']}, bound {after['boundary_distance_bound']}")
+    require("boundary moved by" in out, out)
+    # and the domain's volume stays (independently of the program's measure)
+    v0, v1 = mesh_volume(source), mesh_volume(work(name + "_gsm" + extension))
+    require(abs(v1 - v0) <= 1e-3 * v0, f"{name}: volume {v0} -> {v1}")
+
+
+def check_optimize_tetgen():
+    verify_optimized(tetgen_mesh("fandisk"), "fandisk_tetgen")
+
+
+def check_optimize_gmsh():
+    verify_optimized(gmsh_mesh("fandisk"), "fandisk_gmsh")
+
+
+def check_optimize_two_labels():
+    """a two-label MEDIT mesh written by Gmsh: a ball inside a box, without Gmsh's optimizer"""
+    with open(work("two.geo"), "w") as f:
+        f.write('SetFactory("OpenCASCADE");\nBox(1) = {-1, -1, -1, 2, 2, 2};\nSphere(2) = {0, 0, 0, 0.6};\n'
+                'v() = BooleanFragments{ Volume{1}; Delete; }{ Volume{2}; Delete; };\n'
+                'Mesh.MeshSizeMax = 0.2;\nMesh.Optimize = 0;\n')
+    run_tool([ARGS.gmsh, work("two.geo"), "-3", "-o", work("two.mesh")])
+    verify_optimized(work("two.mesh"), "two_labels")
+    def tet_labels(mesh):
+        return np.concatenate([l for b, l in zip(mesh.cells, labels_of(mesh)) if b.type == "tetra"])
+    before, after = tet_labels(meshio.read(work("two.mesh"))), tet_labels(meshio.read(work("two_labels_gsm.mesh")))
+    require(len(set(before.tolist())) == 2, f"Gmsh's mesh has labels {set(before.tolist())}")
+    for l in set(before.tolist()):
+        n0, n1 = (before == l).sum(), (after == l).sum()
+        require(abs(n1 - n0) <= 0.15 * n0, f"label {l}: {n0} -> {n1} cells")
+
+
+def bad_case(args, words, output):
+    """exit 2, a message with `words`, and `output` (made beforehand) untouched"""
+    with open(output, "w") as f:
+        f.write("keep")
+    _, err = run(args, expect=2)
+    require(any(w.lower() in err.lower() for w in words.split("|")) and "error" in err,
+            f"vvm-mesh {' '.join(args)}: message\n{err}")
+    with open(output) as f:
+        require(f.read() == "keep", f"vvm-mesh {' '.join(args)} touched {output}")
+    leftovers = [n for n in os.listdir(os.path.dirname(output)) if n.endswith(".tmp")]
+    require(not leftovers, f"temporary files left: {leftovers}")
+
+
+def check_bad_inputs():
+    out = work("out.mesh")
+    with open(work("empty.off"), "w"):
+        pass
+    with open(data("cube.off")) as f:
+        lines = f.read().split("\n")
+    with open(work("open.off"), "w") as f:  # the cube less one triangle
+        f.write("OFF\n8 11 0\n" + "\n".join(lines[2:10] + lines[11:22]) + "\n")
+    with open(work("nan.off"), "w") as f:
+        f.write("OFF\n4 4 0\nnan 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n")
+    tet = "0 0 0 0\n1 0 0 0\n0 1 0 0\n0 0 1 0\n1 1 1 0\n"
+    with open(work("inverted.mesh"), "w") as f:  # two tets of opposite orientations
+        f.write(f"MeshVersionFormatted 1\nDimension 3\nVertices\n5\n{tet}Tetrahedra\n2\n1 2 3 4 1\n3 2 4 5 1\nEnd\n")
+    with open(work("flat.mesh"), "w") as f:
+        f.write("MeshVersionFormatted 1\nDimension 3\nVertices\n4\n0 0 0 0\n1 0 0 0\n0 1 0 0\n1 1 0 0\n"
+                "Tetrahedra\n1\n1 2 3 4 1\nEnd\n")
+    with open(work("nan.mesh"), "w") as f:
+        f.write("MeshVersionFormatted 1\nDimension 3\nVertices\n4\nnan 0 0 0\n1 0 0 0\n0 1 0 0\n0 0 1 0\n"
+                "Tetrahedra\n1\n1 2 3 4 1\nEnd\n")
+    with open(work("nocell.mesh"), "w") as f:
+        f.write(f"MeshVersionFormatted 1\nDimension 3\nVertices\n5\n{tet}End\n")
+    cases = [
+        (["tet", work("missing.off"), "-o", out], "cannot open"),
+        (["tet", work("empty.off"), "-o", out], "empty"),
+        (["tet", work("open.off"), "-o", out], "open"),
+        (["tet", work("nan.off"), "-o", out], "non-finite|cannot read"),
+        (["tet", data("cube.off"), "-o", work("out.xyz")], "extension"),
+        (["tet", data("cube.off"), "-o", out, "--vertices", "many"], "expects a number"),
+        (["tet", data("cube.off"), "-o", out, "--method", "magic"], "unknown method"),
+        (["tet", data("cube.off"), "-o", out, "--size", "-1"], "size"),
+        (["tet", data("cube.off"), "-o", out, "--frobnicate"], "unknown option"),
+        (["tet", data("cube.off"), "-o", os.path.join(work("no_folder"), "x.mesh")], "no folder"),
+        (["hexdom", data("cube.off"), "-o", out, "--q-bound", "2"], "q-bound"),
+        (["optimize", work("inverted.mesh"), "-o", out], "inverted"),
+        (["optimize", work("flat.mesh"), "-o", out], "flat"),
+        (["optimize", work("nan.mesh"), "-o", out], "non-finite"),
+        (["optimize", work("nocell.mesh"), "-o", out], "no tetrahedron"),
+        (["optimize", data("cube.off"), "-o", out], "extension"),
+        (["optimize", work("inverted.mesh"), "-o", out, "--json", out], "overwrite"),
+        (["tet", data("cube.off"), "-o", out, "--seed", "-3"], "seed"),
+        (["quality", work("missing.mesh")], "cannot open"),
+        (["frobnicate"], "unknown command"),
+    ]
+    for args, words in cases:
+        bad_case(args, words, out)
+    require(not os.path.exists(work("out.xyz")), "out.xyz written")
+
+
+CHECKS = {name[len("check_"):]: f for name, f in globals().items() if name.startswith("check_") and callable(f)}
+
+
+def main():
+    global ARGS
+    parser = argparse.ArgumentParser()
+    parser.add_argument("--vvm-mesh")
+    parser.add_argument("--data")
+    parser.add_argument("--work")
+    parser.add_argument("--tetgen", default="tetgen")
+    parser.add_argument("--gmsh", default="gmsh")
+    parser.add_argument("--registered", action="store_true")
+    parser.add_argument("checks", nargs="*")
+    ARGS = parser.parse_args()
+    if ARGS.registered:
+        missing = sorted(set(CHECKS) - set(ARGS.checks))
+        require(not missing, f"checks not registered with CTest: {missing}")
+        print(f"{len(CHECKS)} checks registered")
+        return
+    require(len(ARGS.checks) == 1 and ARGS.checks[0] in CHECKS, f"one of {sorted(CHECKS)} expected")
+    shutil.rmtree(ARGS.work, ignore_errors=True)
+    os.makedirs(ARGS.work)
+    CHECKS[ARGS.checks[0]]()
+    print(f"{ARGS.checks[0]}: passed")
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,155 @@
+// Copyright (c) 2026 VVM contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The front end's particle meshes of a closed surface: BCC / FCC lattice tet
+// meshes (vvm::tet_mesh), hex-dominant meshes, and the cross field alone.
+
+#include "optimizer_chain.h"
+
+#include <CGAL/Frame_fields/Constant_frame_field_3.h>
+#include <CGAL/Frame_fields/IO/frame_field_text_format.h>
+#include <CGAL/Frame_fields/generate_cross_field_3.h>
+#include <CGAL/make_hex_dominant_mesh_3.h>
+#include <CGAL/make_lattice_mesh_3.h>
+
+#include <fstream>
+#include <sstream>
+
+namespace vvm {
+namespace internal {
+namespace {
+
+namespace FF = CGAL::Frame_fields;
+namespace TLM = CGAL::Tetrahedral_lattice_meshing;
+namespace HDM = CGAL::Hex_dominant_meshing;
+
+std::string particle_round_text(const TLM::Lattice_round_report& r)
+{
+  char text[160];
+  std::snprintf(text, sizeof text, "level %d round %d: %zu particles, energy %.4g", r.level, r.round,
+                r.number_of_particles, r.energy);
+  return text;
+}
+
+/// calls `run(field)` with the field `name` names: identity, a frame-field file, or (cross)
+/// no field, for the packages' own boundary-aligned cross field
+template <class Run>
+auto with_field(const std::string& name, const Run& run)
+{
+  if(name == "cross") return run(static_cast<const FF::Discrete_frame_field_3<Kernel>*>(nullptr));
+  if(name == "identity") {
+    const FF::Constant_frame_field_3<Kernel> identity;
+    return run(&identity);
+  }
+  std::ifstream is(name);
+  if(!is) throw Input_error("cannot open the frame-field file '" + name + "'");
+  try {
+    const FF::Discrete_frame_field_3<Kernel> field = FF::IO::read_frame_field<Kernel>(is);
+    return run(&field);
+  } catch(const Input_error&) {
+    throw;
+  } catch(const std::invalid_argument& e) {
+    throw Input_error("'" + name + "': " + e.what());
+  }
+}
+
+} // namespace
+
+Volume_mesh lattice_tet_mesh(const std::string& input, const Tet_options& o, const Progress& progress, Run_report& r)
+{
+  const auto threads = thread_limit(o.threads);
+  Surface_input in(input, o.features_angle);
+  const Stage stage(progress, "lattice " + o.method);
+  auto np = TLM::parameters::lattice(o.method == "bcc" ? TLM::Lattice_type::BCC : TLM::Lattice_type::FCC,
+                                     TLM::parameters::number_of_threads(o.threads,
+                                         CGAL::parameters::random_seed(o.seed).visitor(
+                                             [&stage](const TLM::Lattice_round_report& rr) {
+                                               stage.report(particle_round_text(rr));
+                                             })));
+  Surface_c3t3 c3t3 = with_field(o.field, [&](const auto* field) {
+    try {
+      if(o.size.size > 0) {
+        auto sized = TLM::parameters::edge_length(o.size.size, np);
+        return field ? CGAL::make_lattice_mesh_3<Surface_c3t3>(*in.domain, *field, sized)
+                     : CGAL::make_lattice_mesh_3<Surface_c3t3>(*in.domain, sized);
+      }
+      auto counted = TLM::parameters::number_of_particles(o.size.vertices, np);
+      return field ? CGAL::make_lattice_mesh_3<Surface_c3t3>(*in.domain, *field, counted)
+                   : CGAL::make_lattice_mesh_3<Surface_c3t3>(*in.domain, counted);
+    } catch(const std::invalid_argument& e) {
+      throw Input_error(e.what());
+    }
+  });
+  r.optimize_time = stage.time();
+  return to_volume_mesh(c3t3);
+}
+
+} // namespace internal
+
+Volume_mesh hex_dominant_mesh(const std::string& input, const Hex_dominant_options& o, const Progress& progress,
+                              Run_report* report)
+{
+  Run_report local;
+  Run_report& r = report ? *report : local;
+  r.input = input;
+  r.method = "hexdom";
+  internal::check_mesh_size(o.size, "particles");
+  if(!(o.quality_bound >= 0 && o.quality_bound <= 1)) throw Input_error("--q-bound must be in [0, 1]");
+  if(!(o.boundary_distance >= 0) || !std::isfinite(o.boundary_distance))
+    throw Input_error("--boundary-distance must be non-negative and finite");
+  const auto threads = internal::thread_limit(o.threads);
+  internal::Surface_input in(input, o.features_angle);
+  const internal::Stage stage(progress, "hexdom");
+  auto np = internal::HDM::parameters::quality_bound(
+      o.quality_bound,
+      internal::HDM::parameters::boundary_distance(
+          o.boundary_distance,
+          internal::HDM::parameters::stage_visitor(
+              [&stage](CGAL::Hex_dominant_meshing::Hex_dominant_stage s, double seconds) {
+                const char* name = s == CGAL::Hex_dominant_meshing::Hex_dominant_stage::PARTICLES ? "particles"
+                                   : s == CGAL::Hex_dominant_meshing::Hex_dominant_stage::TETRAHEDRA ? "tetrahedra"
+                                                                                                     : "merging";
+                stage.report(std::string(name) + " done in " + std::to_string(seconds) + " s");
+              },
+              internal::TLM::parameters::number_of_threads(o.threads, CGAL::parameters::random_seed(o.seed)))));
+  Volume_mesh mesh = internal::with_field(o.field, [&](const auto* field) {
+    try {
+      if(o.size.size > 0) {
+        auto sized = internal::TLM::parameters::edge_length(o.size.size, np);
+        return field ? CGAL::make_hex_dominant_mesh_3<internal::Surface_c3t3>(*in.domain, *field, sized)
+                     : CGAL::make_hex_dominant_mesh_3<internal::Surface_c3t3>(*in.domain, sized);
+      }
+      auto counted = internal::TLM::parameters::number_of_particles(o.size.vertices, np);
+      return field ? CGAL::make_hex_dominant_mesh_3<internal::Surface_c3t3>(*in.domain, *field, counted)
+                   : CGAL::make_hex_dominant_mesh_3<internal::Surface_c3t3>(*in.domain, counted);
+    } catch(const std::invalid_argument& e) {
+      throw Input_error(e.what());
+    }
+  });
+  r.optimize_time = stage.time();
+  return mesh;
+}
+
+std::string cross_field(const std::string& input, const Field_options& o, const Progress& progress, Run_report* report)
+{
+  Run_report local;
+  Run_report& r = report ? *report : local;
+  r.input = input;
+  r.method = "field";
+  internal::check_mesh_size(o.size);
+  internal::Surface_input in(input, o.features_angle);
+  internal::Surface_c3t3 c3t3;
+  {
+    const internal::Stage stage(progress, "make_mesh_3");
+    c3t3 = internal::initial_mesh<internal::Surface_c3t3>(*in.domain, in.volume, o.size, o.seed, stage);
+    r.mesh_time = stage.time();
+  }
+  const internal::Stage stage(progress, "cross field");
+  stage.report("generate_cross_field_3 on " + std::to_string(c3t3.number_of_cells_in_complex()) + " cells");
+  std::ostringstream os;
+  CGAL::Frame_fields::IO::write_frame_field(os, CGAL::Frame_fields::generate_cross_field_3(c3t3).field);
+  r.optimize_time = stage.time();
+  return os.str();
+}
+
+} // namespace vvm

@@ -1,0 +1,80 @@
+// Copyright (c) 2026 VVM contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// vvm::tet_mesh on a closed surface: make_mesh_3 of its domain (sharp edges
+// protected) at a size or vertex count, then an optimizer chain. Images and
+// lattices are in their own units.
+
+#include "optimizer_chain.h"
+
+#include <CGAL/Frame_fields/IO/frame_field_text_format.h>
+
+#include <algorithm>
+#include <cctype>
+#include <fstream>
+#include <memory>
+
+namespace vvm {
+namespace internal {
+
+bool has_extension(const std::string& path, const std::string& extension)
+{
+  std::string lower = path;
+  std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  return lower.size() >= extension.size() && lower.compare(lower.size() - extension.size(), extension.size(), extension) == 0;
+}
+
+bool is_image_file(const std::string& path) { return has_extension(path, ".inr") || has_extension(path, ".inr.gz"); }
+
+/// GSM's target metric from a frame-field file (B^T B); empty for cross and identity
+std::function<Eigen::Matrix3d(const Eigen::Vector3d&)> metric_of_field(const std::string& field)
+{
+  if(field == "cross" || field == "identity") return {};
+  std::ifstream is(field);
+  if(!is) throw Input_error("cannot open the frame-field file '" + field + "'");
+  std::shared_ptr<CGAL::Frame_fields::Discrete_frame_field_3<Kernel>> f;
+  try {
+    f = std::make_shared<CGAL::Frame_fields::Discrete_frame_field_3<Kernel>>(
+        CGAL::Frame_fields::IO::read_frame_field<Kernel>(is));
+  } catch(const std::exception& e) {
+    throw Input_error("'" + field + "': " + e.what());
+  }
+  return [f](const Eigen::Vector3d& x) {
+    const Eigen::Matrix3d B = f->B(Point(x[0], x[1], x[2]));
+    return Eigen::Matrix3d(B.transpose() * B);
+  };
+}
+
+} // namespace internal
+
+Volume_mesh tet_mesh(const std::string& input, const Tet_options& o, const Progress& progress, Run_report* report)
+{
+  Run_report local;
+  Run_report& r = report ? *report : local;
+  r.input = input;
+  r.method = o.method;
+  internal::check_mesh_size(o.size);
+  if(o.method == "bcc" || o.method == "fcc") {
+    if(internal::is_image_file(input)) throw Input_error("--method " + o.method + " meshes surfaces, not images");
+    return internal::lattice_tet_mesh(input, o, progress, r);
+  }
+  if(!internal::is_optimizer_chain(o.method))
+    throw Input_error("unknown method '" + o.method + "' (known: gsm, odt+gsm, perturb+exude, bcc, fcc)");
+  if(internal::is_image_file(input)) return internal::image_tet_mesh(input, o, progress, r);
+  const auto metric = internal::metric_of_field(o.field);
+  const auto threads = internal::thread_limit(o.threads);
+  internal::Surface_input in(input, o.features_angle);
+  internal::Surface_c3t3 c3t3;
+  {
+    const internal::Stage stage(progress, "make_mesh_3");
+    c3t3 = internal::initial_mesh<internal::Surface_c3t3>(*in.domain, in.volume, o.size, o.seed, stage);
+    r.mesh_time = stage.time();
+  }
+  CGAL::Real_timer timer;
+  timer.start();
+  internal::run_optimizer_chain(c3t3, *in.domain, o, progress, metric);
+  r.optimize_time = timer.time();
+  return internal::to_volume_mesh(c3t3);
+}
+
+} // namespace vvm

@@ -1,0 +1,165 @@
+// Copyright (c) 2026 VVM contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The front-end layer: what the vvm-mesh program (and the Python module) run,
+// over the packages' public API. One option vocabulary, one mesh type for
+// files, one error type for bad input, one progress callback.
+
+#ifndef VVM_FRONT_END_H
+#define VVM_FRONT_END_H
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Hex_dominant_mesh_3.h>
+
+#include <array>
+#include <cstddef>
+#include <functional>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace vvm {
+
+typedef CGAL::Exact_predicates_inexact_constructions_kernel Kernel;
+typedef Kernel::Point_3 Point;
+/// a volume mesh as files hold it: points, and tetrahedra, hexahedra, prisms and pyramids with
+/// their subdomain labels
+typedef CGAL::Hex_dominant_mesh_3<Point> Volume_mesh;
+
+/// a bad argument or a bad input (missing or unreadable file, open surface, unknown
+/// extension, inverted cells, NaN, ...): the program's exit code 2, Python's ValueError
+struct Input_error : std::invalid_argument
+{
+  using std::invalid_argument::invalid_argument;
+};
+
+/// what a long run reports as it goes
+struct Progress_event
+{
+  std::string stage;    ///< e.g. "make_mesh_3", "gsm", "particles", "merging"
+  double fraction = -1; ///< done, in [0, 1]; < 0: unknown
+  std::string detail;   ///< e.g. "round 3: min angle 21.4"
+  double elapsed = 0;   ///< seconds since the stage started
+};
+typedef std::function<void(const Progress_event&)> Progress;
+
+/// the size of a mesh: an edge length, or a number of vertices (or particles) sought
+struct Mesh_size
+{
+  double size = 0;                ///< > 0: the edge length
+  std::size_t vertices = 10000;   ///< used when `size` is 0
+};
+
+/// `vvm-mesh tet`
+struct Tet_options
+{
+  std::string method = "gsm";  ///< gsm, odt+gsm, perturb+exude, bcc, fcc
+  Mesh_size size;
+  double features_angle = 60;  ///< degrees; 0: no feature protected (surfaces only)
+  std::string field = "cross"; ///< cross, identity, or a frame-field file (lattices; a file is GSM's metric too)
+  int threads = 0;             ///< 0: all cores
+  unsigned int seed = 0;
+};
+
+/// `vvm-mesh hexdom`
+struct Hex_dominant_options
+{
+  Mesh_size size{0, 30000};    ///< particles, or the lattice's edge length
+  double quality_bound = 0.5;  ///< Q_bound of the merging, in [0, 1]
+  double boundary_distance = 0; ///< the boundary refinement's distance; 0: none
+  double features_angle = 60;
+  std::string field = "cross";
+  int threads = 0;
+  unsigned int seed = 0;
+};
+
+/// `vvm-mesh optimize`
+struct Optimize_options
+{
+  double features_angle = 60; ///< edges of the boundary and interfaces sharper than this are kept (0: none)
+  bool fixed_boundary = false; ///< only interior vertices move
+  /// how far the boundary facets may stray from the input's boundary; < 0: 1% of its mean edge
+  /// length; 0: boundary vertices slide on flat parts only
+  double boundary_distance = -1;
+  int threads = 0;
+  unsigned int seed = 0;
+};
+
+/// `vvm-mesh field`
+struct Field_options
+{
+  Mesh_size size;              ///< of the tetrahedral mesh that carries the field
+  double features_angle = 60;
+  unsigned int seed = 0;
+};
+
+/// what a run made, for the summary and the JSON line
+struct Run_report
+{
+  std::string input;
+  std::string method;
+  double mesh_time = 0;     ///< seconds to make the initial mesh (or to read it)
+  double optimize_time = 0; ///< seconds of the optimizer / lattice / merging
+  std::size_t input_vertices = 0; ///< optimize: the input's
+  double boundary_distance_bound = -1; ///< optimize: the bound the boundary was held to
+  double boundary_hausdorff = -1;      ///< optimize: two-sided distance between the input's and the output's boundaries
+};
+
+/// the quality table of a volume mesh
+struct Mesh_quality
+{
+  std::size_t vertices = 0, cells = 0;
+  std::size_t tetrahedra = 0, hexahedra = 0, prisms = 0, pyramids = 0;
+  std::size_t inverted = 0;        ///< cells with a non-positive corner Jacobian
+  std::vector<int> labels;         ///< the subdomain labels, sorted
+  // tetrahedra
+  double min_dihedral = 0, max_dihedral = 0, mean_min_dihedral = 0;
+  std::array<std::size_t, 4> tets_under{{0, 0, 0, 0}}; ///< smallest dihedral angle under 10, 20, 30, 40 degrees
+  double min_radius_ratio = 0, mean_radius_ratio = 0;
+  std::array<std::size_t, 18> min_dihedral_histogram{}; ///< the tets' smallest angles in bins of 10 degrees
+  // all cells
+  double hex_volume_percent = 0;   ///< H_vol%
+  double min_scaled_jacobian = 0;  ///< over all cells (corner Jacobians of unit edges)
+  double mean_hex_scaled_jacobian = 0;
+};
+
+/// `vvm-mesh tet INPUT`: a closed surface (OFF, OBJ, PLY, STL, ...) or a labelled 3D image
+/// (.inr, .inr.gz): make_mesh_3 and an optimizer, or a lattice mesh
+Volume_mesh tet_mesh(const std::string& input, const Tet_options& options, const Progress& progress = {},
+                     Run_report* report = nullptr);
+
+/// `vvm-mesh hexdom INPUT`: a hex-dominant mesh of a closed surface
+Volume_mesh hex_dominant_mesh(const std::string& input, const Hex_dominant_options& options,
+                              const Progress& progress = {}, Run_report* report = nullptr);
+
+/// `vvm-mesh optimize MESH`: GSM on the tetrahedra of a mesh made by any mesher (labels kept)
+Volume_mesh optimize_tet_mesh(const Volume_mesh& mesh, const Optimize_options& options,
+                              const Progress& progress = {}, Run_report* report = nullptr);
+
+/// `vvm-mesh field INPUT`: the boundary-aligned cross field of a closed surface, in the
+/// frame-field text format (CGAL/Frame_fields/IO/frame_field_text_format.h)
+std::string cross_field(const std::string& input, const Field_options& options, const Progress& progress = {},
+                        Run_report* report = nullptr);
+
+/// the quality table of any tetrahedral or hex-dominant mesh
+Mesh_quality mesh_quality(const Volume_mesh& mesh);
+/// per-cell arrays for a VTU file: smallest dihedral angle (tets; 0 for others), scaled Jacobian
+std::vector<std::pair<std::string, std::vector<double>>> cell_quality_arrays(const Volume_mesh& mesh);
+
+/// reads a .mesh (MEDIT), .msh (Gmsh 2.2 or 4.1) or .vtu file; Input_error if it cannot
+Volume_mesh read_volume_mesh(const std::string& path);
+/// writes by extension (.mesh, .msh 4.1, .vtu with the quality arrays) through a temporary file
+/// in the same folder, renamed at the end: a failed write leaves no file and `path` untouched
+void write_volume_mesh(const Volume_mesh& mesh, const std::string& path);
+/// writes `text` to `path` the same way
+void write_text_file(const std::string& text, const std::string& path);
+/// whether `path` has one of the extensions write_volume_mesh() writes
+bool is_volume_mesh_file(const std::string& path);
+
+/// the figures of a run as one JSON line (the benchmark drivers' keys where they match)
+std::string json_line(const Run_report& report, const Mesh_quality& quality);
+
+} // namespace vvm
+
+#endif // VVM_FRONT_END_H
