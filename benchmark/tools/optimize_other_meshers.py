@@ -5,13 +5,13 @@
 
 usage: optimize_other_meshers.py VVM_MESH DATA_DIR OUT_DIR [--vertices N] [--models a,b,...]
 
-For every closed surface DATA_DIR/*.off (features 60 degrees):
-  - TetGen's quality mesh: tetgen -pq1.3/15 -a<A> -g (the boundary refined as TetGen likes,
-    on the input surface), A corrected twice for about N vertices (a surface with more
-    vertices than that keeps them);
+For every closed surface DATA_DIR/*.off, both tools get the same surface, sized for a volume
+mesh of about N vertices: the boundary of make_mesh_3's mesh at N vertices (vvm-mesh tet
+--method perturb+exude, sharp edges protected at 60 degrees). Then:
+  - TetGen's quality mesh: tetgen -pq1.3/15 -Y -a<A> -g (the surface kept), A corrected
+    twice for about N vertices;
   - Gmsh's: the surface kept (STL, discrete), Delaunay, its optimizer with
-    Mesh.OptimizeThreshold=0.7, Mesh.MeshSizeMax from the volume for about N vertices
-    (a surface with more vertices than that keeps them);
+    Mesh.OptimizeThreshold=0.7, Mesh.MeshSizeMax from the volume for about N vertices;
 then vvm-mesh optimize on each. One line per model and tool: the tool's figures, GSM's, and
 the bars of issue #45 (smallest angle >= 25, no tet under 20, fewer tets under 30 and 40,
 higher mean smallest angle, vertex count within 3%, boundary moved no more than the bound,
@@ -42,6 +42,22 @@ def read_off(path):
         faces += [[poly[0], poly[j], poly[j + 1]] for j in range(1, k - 1)]
         i += 1 + k
     return v, np.array(faces)
+
+
+def boundary_of(mesh_path):
+    """the facets of exactly one tetrahedron, oriented outwards, and their vertices"""
+    import meshio
+    mesh = meshio.read(mesh_path)
+    tets = np.concatenate([b.data for b in mesh.cells if b.type == "tetra"])
+    faces = {}
+    for t in tets:
+        for i, (a, b, c) in enumerate(((1, 2, 3), (0, 3, 2), (0, 1, 3), (0, 2, 1))):
+            tri = (t[a], t[b], t[c])
+            key = tuple(sorted(tri))
+            faces[key] = None if key in faces else tri
+    tris = np.array([tri for tri in faces.values() if tri is not None])
+    used, index = np.unique(tris, return_inverse=True)
+    return mesh.points[used], index.reshape(-1, 3)
 
 
 def volume(v, f):
@@ -91,19 +107,24 @@ def main():
               f"{'t_gsm':>6} result")
     print(header, flush=True)
     for name in names:
-        v, f = read_off(os.path.join(data, name + ".off"))
+        prefix = os.path.join(out, name)
+        code, _, log = timed([vvm, "tet", os.path.join(data, name + ".off"), "-o", prefix + "_surface.mesh",
+                              "--method", "perturb+exude", "--vertices", str(target), "--quiet"])
+        if code != 0:
+            print(f"{name:12} vvm-mesh tet failed: {log.strip()[-300:]}", flush=True)
+            continue
+        v, f = boundary_of(prefix + "_surface.mesh")
         vol = volume(v, f)
         # about 5.5 tets per vertex, TetGen's -a is a bound: twice the mean
         a = 2 * vol / (5.5 * target)
         h = (vol / target * 6 * np.sqrt(2)) ** (1 / 3)  # the regular tet edge of that density
         inputs = {}
-        prefix = os.path.join(out, name)
         write_stl(v, f, prefix + ".stl")
         with open(prefix + ".poly.off", "w") as g:  # TetGen wants triangles
             g.write(f"OFF\n{len(v)} {len(f)} 0\n" + "".join(f"{p[0]!r} {p[1]!r} {p[2]!r}\n" for p in v) +
                     "".join(f"3 {t[0]} {t[1]} {t[2]}\n" for t in f))
         for attempt in range(3):  # -a corrected by the vertex count TetGen gave
-            code, t, log = timed(["tetgen", "-pq1.3/15", f"-a{a:.6g}", "-gQ", prefix + ".poly.off"])
+            code, t, log = timed(["tetgen", "-pq1.3/15", "-Y", f"-a{a:.6g}", "-gQ", prefix + ".poly.off"])
             if code != 0 or not os.path.exists(prefix + ".poly.1.node"):
                 break
             with open(prefix + ".poly.1.node") as g:

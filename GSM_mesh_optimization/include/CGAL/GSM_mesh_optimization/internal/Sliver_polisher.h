@@ -118,7 +118,8 @@ public:
       bound_(bound), penalty_(Angle_penalty::for_bound(bound)), do_split_(do_split), boundary_fixed_(boundary_fixed),
       shortest_moves_(shortest_moves),
       split_budget_(std::size_t(max_split_fraction * double(c3t3.triangulation().number_of_vertices()))),
-      removal_budget_(split_budget_)
+      removal_budget_(split_budget_),
+      fewest_vertices_(c3t3.triangulation().number_of_vertices() - split_budget_)
   {}
 
   /// one pass over the cells under the bound, worst first: their vertices' moves, then
@@ -170,7 +171,7 @@ public:
       std::unordered_set<Vertex_handle> removed; // their handles are dangling
       const auto collapse = [&](const Cell_handle& c, const Cell_vertices&) {
         Vertex_handle v;
-        if(!surface_collapses_.try_collapse_cell(c, v)) return false;
+        if(!may_remove_surface_vertex() || !surface_collapses_.try_collapse_cell(c, v)) return false;
         removed.insert(v);
         return true;
       };
@@ -266,12 +267,18 @@ private:
     typename Surface_vertex_collapse<C3T3, MeshDomain>::Plan p;
     for(const auto& x : vertices) {
       if(stop()) return false;
+      if(!may_remove_surface_vertex()) break;
       if(!surface_collapses_.best_collapse(x.second, p)) continue;
       surface_collapses_.apply(p);
       ++n;
     }
     return true;
   }
+
+  // surface vertex removals stop where the mesh would have 3% fewer vertices than at the start
+  // (flat patches, whose facets stay on the surface whatever goes, would lose many: a user
+  // who asks for a mesh of some size, or cleans up one, keeps it)
+  bool may_remove_surface_vertex() const { return tr_.number_of_vertices() > fewest_vertices_; }
 
   // calls `change(c, vertices)` on each cell of `bad` (the cells under the bound, worst first)
   // that is still there (none of its vertices `removed`), changes replacing cells, and counts
@@ -558,6 +565,7 @@ private:
   bool surface_coarsened_ = false; // the first pass's surface collapses are done
   std::size_t split_budget_;
   std::size_t removal_budget_;
+  std::size_t fewest_vertices_; // surface vertex removals stop there
 };
 
 } // namespace internal
