@@ -275,10 +275,15 @@ private:
     return true;
   }
 
-  // surface vertex removals stop where the mesh would have 3% fewer vertices than at the start
-  // (flat patches, whose facets stay on the surface whatever goes, would lose many: a user
-  // who asks for a mesh of some size, or cleans up one, keeps it)
-  bool may_remove_surface_vertex() const { return tr_.number_of_vertices() > fewest_vertices_; }
+  // on a mesh made elsewhere (its boundary not a convex hull: Complex_from_tetrahedra_3),
+  // surface vertex removals stop where it would have 3% fewer vertices than at the start: its
+  // flat patches, whose facets stay on the surface whatever goes, would lose many, and who
+  // cleans up a mesh keeps its size. On make_mesh_3's meshes the removals of the first pass
+  // are paid back by splits, and a cap costs angles (benchmark/tools/optimize_other_meshers.md)
+  bool may_remove_surface_vertex() const
+  {
+    return smoother_.convex_hull() || tr_.number_of_vertices() > fewest_vertices_;
+  }
 
   // calls `change(c, vertices)` on each cell of `bad` (the cells under the bound, worst first)
   // that is still there (none of its vertices `removed`), changes replacing cells, and counts
