@@ -41,16 +41,8 @@ auto with_field(const std::string& name, const Run& run)
     const FF::Constant_frame_field_3<Kernel> identity;
     return run(&identity);
   }
-  std::ifstream is(name);
-  if(!is) throw Input_error("cannot open the frame-field file '" + name + "'");
-  try {
-    const FF::Discrete_frame_field_3<Kernel> field = FF::IO::read_frame_field<Kernel>(is);
-    return run(&field);
-  } catch(const Input_error&) {
-    throw;
-  } catch(const std::invalid_argument& e) {
-    throw Input_error("'" + name + "': " + e.what());
-  }
+  const FF::Discrete_frame_field_3<Kernel> field = read_frame_field_file(name);
+  return run(&field);
 }
 
 } // namespace

@@ -10,6 +10,7 @@
 
 #include "vvm_front_end.h"
 
+#include <CGAL/Frame_fields/IO/frame_field_text_format.h>
 #include <CGAL/GSM_mesh_optimization/IO/read_closed_surface.h>
 #include <CGAL/GSM_mesh_optimization/mesh_with_vertex_count.h>
 
@@ -28,6 +29,7 @@
 #include <tbb/global_control.h>
 
 #include <cmath>
+#include <fstream>
 #include <map>
 #include <memory>
 #include <string>
@@ -61,6 +63,18 @@ struct Surface_input
     if(features_angle > 0) domain->detect_features(features_angle);
   }
 };
+
+/// the frame field in the file `path` (text format); Input_error if it cannot be read
+inline CGAL::Frame_fields::Discrete_frame_field_3<Kernel> read_frame_field_file(const std::string& path)
+{
+  std::ifstream is(path);
+  if(!is) throw Input_error("cannot open the frame-field file '" + path + "'");
+  try {
+    return CGAL::Frame_fields::IO::read_frame_field<Kernel>(is);
+  } catch(const std::invalid_argument& e) {
+    throw Input_error("'" + path + "': " + e.what());
+  }
+}
 
 /// a stage's timer and its progress events; the last one (fraction 1) when it ends
 class Stage

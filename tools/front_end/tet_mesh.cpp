@@ -7,8 +7,6 @@
 
 #include "optimizer_chain.h"
 
-#include <CGAL/Frame_fields/IO/frame_field_text_format.h>
-
 #include <algorithm>
 #include <cctype>
 #include <fstream>
@@ -30,15 +28,7 @@ bool is_image_file(const std::string& path) { return has_extension(path, ".inr")
 std::function<Eigen::Matrix3d(const Eigen::Vector3d&)> metric_of_field(const std::string& field)
 {
   if(field == "cross" || field == "identity") return {};
-  std::ifstream is(field);
-  if(!is) throw Input_error("cannot open the frame-field file '" + field + "'");
-  std::shared_ptr<CGAL::Frame_fields::Discrete_frame_field_3<Kernel>> f;
-  try {
-    f = std::make_shared<CGAL::Frame_fields::Discrete_frame_field_3<Kernel>>(
-        CGAL::Frame_fields::IO::read_frame_field<Kernel>(is));
-  } catch(const std::exception& e) {
-    throw Input_error("'" + field + "': " + e.what());
-  }
+  const auto f = std::make_shared<CGAL::Frame_fields::Discrete_frame_field_3<Kernel>>(read_frame_field_file(field));
   return [f](const Eigen::Vector3d& x) {
     const Eigen::Matrix3d B = f->B(Point(x[0], x[1], x[2]));
     return Eigen::Matrix3d(B.transpose() * B);

@@ -253,7 +253,6 @@ private:
                                     : Triangle{t[(i + 1) & 3], t[(i + 3) & 3], t[(i + 2) & 3]};
       facets_.push_back(f);
       facet_subdomains_.emplace_back((std::min)(s0, s1), (std::max)(s0, s1));
-      sorted_facets_.push_back(fc.first);
     }
     // the edges of the surfaces and their facets
     std::map<Edge, std::vector<std::size_t>> edge_facets;
@@ -477,7 +476,7 @@ private:
   std::vector<Tetrahedron> tets_;
   std::vector<int> subdomain_;
   std::vector<int> label_of_subdomain_;
-  std::vector<Triangle> facets_, sorted_facets_;
+  std::vector<Triangle> facets_;
   std::vector<std::pair<int, int>> facet_subdomains_;
   std::vector<int> facet_patch_;
   std::size_t number_of_patches_ = 0;
