@@ -4,7 +4,10 @@ set -euo pipefail
 # gmsh, tetgen: the hex-dominant I/O test and the vvm-mesh tests check and re-save meshes with
 # gmsh; vvm-mesh optimize is tested on meshes written by both.
 # ccache: the build compiles through it when present (CMakeLists.txt).
-packages=(g++ make cmake ccache libcgal-dev libeigen3-dev libtbb-dev libboost-dev liblbfgspp-dev python3-meshio gmsh tetgen zlib1g-dev)
+# pybind11-dev, python3-dev: the Python module vvm; python3-pytest its tests;
+# python3-matplotlib its example (examples/python), which the tests run.
+packages=(g++ make cmake ccache libcgal-dev libeigen3-dev libtbb-dev libboost-dev liblbfgspp-dev python3-meshio gmsh tetgen zlib1g-dev
+          pybind11-dev python3-dev python3-pytest python3-matplotlib)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "ok installed" || missing+=("$p")

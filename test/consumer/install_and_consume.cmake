@@ -1,7 +1,9 @@
 # Installs the VVM build tree into a scratch prefix, then configures, builds and
 # runs the consumer project against it with find_package(VVM).
 # -D: VVM_BINARY_DIR, CONSUMER_SOURCE_DIR, WORK_DIR, CMAKE_BUILD_TYPE, and CCACHE_PROGRAM
-# with CCACHE_BASEDIR when VVM compiles through ccache (the consumer then does too)
+# with CCACHE_BASEDIR when VVM compiles through ccache (the consumer then does too);
+# PYTHON3 and PYTHON_SITE_DIR (relative to the prefix) when the Python module is built: it is
+# imported from the prefix and meshes a cube
 file(REMOVE_RECURSE ${WORK_DIR})
 set(prefix ${WORK_DIR}/prefix)
 function(run)
@@ -23,4 +25,14 @@ run(${CMAKE_COMMAND} -S ${CONSUMER_SOURCE_DIR} -B ${WORK_DIR}/build
     -DCMAKE_PREFIX_PATH=${prefix} -DCMAKE_BUILD_TYPE=${CMAKE_BUILD_TYPE} ${launcher})
 run(${CMAKE_COMMAND} --build ${WORK_DIR}/build)
 run(${WORK_DIR}/build/consumer)
+if(PYTHON_SITE_DIR)
+  # (no semicolon in the script: run() takes its arguments as a CMake list)
+  set(ENV{PYTHONPATH} ${prefix}/${PYTHON_SITE_DIR})
+  run(${PYTHON3} -c "
+import vvm
+print('vvm', vvm.__version__, 'from', vvm.__file__)
+assert vvm.__file__.startswith('${prefix}/')
+print(vvm.quality(vvm.tet_mesh('${DATA_DIR}/cube.off', vertices=300))['tetrahedra'], 'tetrahedra')
+")
+endif()
 message(STATUS "consumer built and ran against ${prefix}")

@@ -38,7 +38,7 @@ Volume_mesh image_tet_mesh(const std::string& input, const Tet_options& o, const
     if(!probe) throw Input_error("cannot open '" + input + "'");
     if(probe.tellg() <= 0) throw Input_error("'" + input + "' is an empty file");
   }
-  if(o.field != "cross" && o.field != "identity") throw Input_error("--field FILE is for surfaces");
+  if(o.field != "cross" && o.field != "identity") throw Input_error("a frame-field file (--field FILE) is for surfaces, not images");
   const auto threads = thread_limit(o.threads);
   CGAL::Image_3 image;
   if(!image.read(input.c_str()) || image.image() == nullptr || image.xdim() == 0 || image.ydim() == 0 ||

@@ -47,7 +47,7 @@ auto with_field(const std::string& name, const Run& run)
 
 } // namespace
 
-Volume_mesh lattice_tet_mesh(const std::string& input, const Tet_options& o, const Progress& progress, Run_report& r)
+Volume_mesh lattice_tet_mesh(const Surface_source& input, const Tet_options& o, const Progress& progress, Run_report& r)
 {
   const auto threads = thread_limit(o.threads);
   Surface_input in(input, o.features_angle);
@@ -78,17 +78,18 @@ Volume_mesh lattice_tet_mesh(const std::string& input, const Tet_options& o, con
 
 } // namespace internal
 
-Volume_mesh hex_dominant_mesh(const std::string& input, const Hex_dominant_options& o, const Progress& progress,
+Volume_mesh hex_dominant_mesh(const Surface_source& input, const Hex_dominant_options& o, const Progress& progress,
                               Run_report* report)
 {
   Run_report local;
   Run_report& r = report ? *report : local;
-  r.input = input;
+  const internal::Run_timer run_timer(r);
+  r.input = input.name();
   r.method = "hexdom";
   internal::check_mesh_size(o.size, "particles");
-  if(!(o.quality_bound >= 0 && o.quality_bound <= 1)) throw Input_error("--q-bound must be in [0, 1]");
+  if(!(o.quality_bound >= 0 && o.quality_bound <= 1)) throw Input_error("the quality bound (--q-bound) must be in [0, 1]");
   if(!(o.boundary_distance >= 0) || !std::isfinite(o.boundary_distance))
-    throw Input_error("--boundary-distance must be non-negative and finite");
+    throw Input_error("the boundary distance (--boundary-distance) must be non-negative and finite");
   const auto threads = internal::thread_limit(o.threads);
   internal::Surface_input in(input, o.features_angle);
   const internal::Stage stage(progress, "hexdom");
@@ -103,7 +104,11 @@ Volume_mesh hex_dominant_mesh(const std::string& input, const Hex_dominant_optio
                                                                                                      : "merging";
                 stage.report(std::string(name) + " done in " + std::to_string(seconds) + " s");
               },
-              internal::TLM::parameters::number_of_threads(o.threads, CGAL::parameters::random_seed(o.seed)))));
+              internal::TLM::parameters::number_of_threads(
+                  o.threads, CGAL::parameters::random_seed(o.seed).visitor(
+                                 [&stage](const internal::TLM::Lattice_round_report& rr) {
+                                   stage.report(internal::particle_round_text(rr));
+                                 })))));
   Volume_mesh mesh = internal::with_field(o.field, [&](const auto* field) {
     try {
       if(o.size.size > 0) {
@@ -122,11 +127,12 @@ Volume_mesh hex_dominant_mesh(const std::string& input, const Hex_dominant_optio
   return mesh;
 }
 
-std::string cross_field(const std::string& input, const Field_options& o, const Progress& progress, Run_report* report)
+std::string cross_field(const Surface_source& input, const Field_options& o, const Progress& progress, Run_report* report)
 {
   Run_report local;
   Run_report& r = report ? *report : local;
-  r.input = input;
+  const internal::Run_timer run_timer(r);
+  r.input = input.name();
   r.method = "field";
   internal::check_mesh_size(o.size);
   internal::Surface_input in(input, o.features_angle);
@@ -141,6 +147,46 @@ std::string cross_field(const std::string& input, const Field_options& o, const 
   std::ostringstream os;
   CGAL::Frame_fields::IO::write_frame_field(os, CGAL::Frame_fields::generate_cross_field_3(c3t3).field);
   r.optimize_time = stage.time();
+  return os.str();
+}
+
+Frame_field_arrays frame_field_from_text(const std::string& text)
+{
+  std::istringstream is(text);
+  internal::FF::Discrete_frame_field_3<Kernel> field;
+  try {
+    field = internal::FF::IO::read_frame_field<Kernel>(is);
+  } catch(const std::invalid_argument& e) {
+    throw Input_error(e.what());
+  }
+  Frame_field_arrays a;
+  for(const Point& p : field.points()) a.points.push_back({p.x(), p.y(), p.z()});
+  a.tetrahedra.assign(field.cells().begin(), field.cells().end());
+  for(const Eigen::Matrix3d& T : field.frames())
+    a.frames.push_back({T(0, 0), T(0, 1), T(0, 2), T(1, 0), T(1, 1), T(1, 2), T(2, 0), T(2, 1), T(2, 2)});
+  a.on_cells = field.location() == internal::FF::Frame_location::CELLS;
+  return a;
+}
+
+std::string frame_field_text(const Frame_field_arrays& a)
+{
+  std::vector<Point> points;
+  for(const auto& p : a.points) points.emplace_back(p[0], p[1], p[2]);
+  std::vector<Eigen::Matrix3d> frames;
+  for(const auto& f : a.frames) {
+    Eigen::Matrix3d T;
+    T << f[0], f[1], f[2], f[3], f[4], f[5], f[6], f[7], f[8];
+    frames.push_back(T);
+  }
+  std::ostringstream os;
+  try {
+    internal::FF::IO::write_frame_field(
+        os, internal::FF::Discrete_frame_field_3<Kernel>(
+                std::move(points), a.tetrahedra, std::move(frames),
+                a.on_cells ? internal::FF::Frame_location::CELLS : internal::FF::Frame_location::VERTICES));
+  } catch(const std::invalid_argument& e) {
+    throw Input_error(e.what());
+  }
   return os.str();
 }
 

@@ -61,6 +61,7 @@ Volume_mesh optimize_tet_mesh(const Volume_mesh& mesh, const Optimize_options& o
   typedef CGAL::GSM_mesh_optimization::Complex_from_tetrahedra_3<Kernel> Complex;
   Run_report local;
   Run_report& r = report ? *report : local;
+  const internal::Run_timer run_timer(r);
   r.method = "gsm";
   if(!(o.features_angle >= 0 && o.features_angle <= 180))
     throw Input_error("the features angle must be in [0, 180] degrees");

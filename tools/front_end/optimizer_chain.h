@@ -83,7 +83,7 @@ void run_optimizer_chain(C3T3& c3t3, const MeshDomain& domain, const Tet_options
 // the units of the front end that instantiate other domains
 Volume_mesh image_tet_mesh(const std::string& input, const Tet_options& options, const Progress& progress,
                            Run_report& report);
-Volume_mesh lattice_tet_mesh(const std::string& input, const Tet_options& options, const Progress& progress,
+Volume_mesh lattice_tet_mesh(const Surface_source& input, const Tet_options& options, const Progress& progress,
                              Run_report& report);
 
 } // namespace internal

@@ -29,6 +29,7 @@
 #include <tbb/global_control.h>
 
 #include <cmath>
+#include <exception>
 #include <fstream>
 #include <map>
 #include <memory>
@@ -43,19 +44,28 @@ typedef CGAL::Mesh_triangulation_3<Surface_domain, CGAL::Default, CGAL::Sequenti
 typedef CGAL::Mesh_complex_3_in_triangulation_3<Surface_tr, Surface_domain::Corner_index, Surface_domain::Curve_index>
     Surface_c3t3;
 
-/// a closed surface read from `path` and its domain, sharp edges protected
+/// a closed surface, read from its file or built from its arrays, and its domain, sharp
+/// edges protected
 struct Surface_input
 {
   Surface_mesh surface;
   double volume = 0;
   std::unique_ptr<Surface_domain> domain;
 
-  Surface_input(const std::string& path, double features_angle)
+  Surface_input(const Surface_source& source, double features_angle)
   {
+    namespace IO = CGAL::GSM_mesh_optimization::IO;
     if(!(features_angle >= 0 && features_angle < 180))
       throw Input_error("the features angle must be in [0, 180) degrees");
     try {
-      volume = CGAL::GSM_mesh_optimization::IO::read_closed_surface(path, surface);
+      if(source.is_file()) {
+        volume = IO::read_closed_surface(source.path, surface);
+      } else {
+        std::vector<Point> points;
+        points.reserve(source.points.size());
+        for(const auto& p : source.points) points.emplace_back(p[0], p[1], p[2]);
+        volume = IO::closed_surface_from_polygon_soup(points, source.polygons, surface);
+      }
     } catch(const std::invalid_argument& e) {
       throw Input_error(e.what());
     }
@@ -76,6 +86,19 @@ inline CGAL::Frame_fields::Discrete_frame_field_3<Kernel> read_frame_field_file(
   }
 }
 
+/// sets `report.run_time` to the time of a front-end call when the call ends, normally or not
+class Run_timer
+{
+public:
+  explicit Run_timer(Run_report& report) : report_(report) { timer_.start(); }
+  Run_timer(const Run_timer&) = delete;
+  ~Run_timer() { report_.run_time = timer_.time(); }
+
+private:
+  Run_report& report_;
+  CGAL::Real_timer timer_;
+};
+
 /// a stage's timer and its progress events; the last one (fraction 1) when it ends
 class Stage
 {
@@ -85,7 +108,8 @@ public:
   ~Stage()
   {
     try {
-      if(progress_) progress_({name_, 1, last_, timer_.time()});
+      // no "done" while an exception (e.g. the caller's request to stop) unwinds the stage
+      if(progress_ && std::uncaught_exceptions() == 0) progress_({name_, 1, last_, timer_.time()});
     } catch(...) { // a destructor must not throw; the stage's end is only news
     }
   }

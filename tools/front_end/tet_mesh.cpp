@@ -37,20 +37,22 @@ std::function<Eigen::Matrix3d(const Eigen::Vector3d&)> metric_of_field(const std
 
 } // namespace internal
 
-Volume_mesh tet_mesh(const std::string& input, const Tet_options& o, const Progress& progress, Run_report* report)
+Volume_mesh tet_mesh(const Surface_source& input, const Tet_options& o, const Progress& progress, Run_report* report)
 {
   Run_report local;
   Run_report& r = report ? *report : local;
-  r.input = input;
+  const internal::Run_timer run_timer(r);
+  r.input = input.name();
   r.method = o.method;
   internal::check_mesh_size(o.size);
+  const bool image = input.is_file() && internal::is_image_file(input.path);
   if(o.method == "bcc" || o.method == "fcc") {
-    if(internal::is_image_file(input)) throw Input_error("--method " + o.method + " meshes surfaces, not images");
+    if(image) throw Input_error("the method " + o.method + " meshes surfaces, not images");
     return internal::lattice_tet_mesh(input, o, progress, r);
   }
   if(!internal::is_optimizer_chain(o.method))
     throw Input_error("unknown method '" + o.method + "' (known: gsm, odt+gsm, perturb+exude, bcc, fcc)");
-  if(internal::is_image_file(input)) return internal::image_tet_mesh(input, o, progress, r);
+  if(image) return internal::image_tet_mesh(input.path, o, progress, r);
   const auto metric = internal::metric_of_field(o.field);
   const auto threads = internal::thread_limit(o.threads);
   internal::Surface_input in(input, o.features_angle);

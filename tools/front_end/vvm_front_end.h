@@ -44,6 +44,24 @@ struct Progress_event
 };
 typedef std::function<void(const Progress_event&)> Progress;
 
+/// a closed surface to mesh: a file (OFF, OBJ, PLY, STL, ...; for `tet_mesh()` also a
+/// labelled 3D image, .inr or .inr.gz), or points and polygons in memory
+struct Surface_source
+{
+  std::string path; ///< the file; empty: `points` and `polygons`
+  std::vector<std::array<double, 3>> points;
+  std::vector<std::vector<std::size_t>> polygons; ///< indices into `points`, three or more each
+
+  Surface_source(std::string file) : path(std::move(file)) {}
+  Surface_source(const char* file) : path(file) {}
+  Surface_source(std::vector<std::array<double, 3>> p, std::vector<std::vector<std::size_t>> f)
+      : points(std::move(p)), polygons(std::move(f))
+  {}
+  bool is_file() const { return !path.empty(); }
+  /// the name of the input in reports
+  std::string name() const { return is_file() ? path : "(arrays)"; }
+};
+
 /// the size of a mesh: an edge length, or a number of vertices (or particles) sought
 struct Mesh_size
 {
@@ -101,6 +119,7 @@ struct Run_report
   std::string method;
   double mesh_time = 0;     ///< seconds to make the initial mesh (or to read it)
   double optimize_time = 0; ///< seconds of the optimizer / lattice / merging
+  double run_time = 0;      ///< seconds of the whole call (input checks, measures and conversions included)
   std::size_t input_vertices = 0; ///< optimize: the input's
   double boundary_distance_bound = -1; ///< optimize: the bound the boundary was held to
   double boundary_hausdorff = -1;      ///< optimize: two-sided distance between the input's and the output's boundaries
@@ -126,11 +145,11 @@ struct Mesh_quality
 
 /// `vvm-mesh tet INPUT`: a closed surface (OFF, OBJ, PLY, STL, ...) or a labelled 3D image
 /// (.inr, .inr.gz): make_mesh_3 and an optimizer, or a lattice mesh
-Volume_mesh tet_mesh(const std::string& input, const Tet_options& options, const Progress& progress = {},
+Volume_mesh tet_mesh(const Surface_source& input, const Tet_options& options, const Progress& progress = {},
                      Run_report* report = nullptr);
 
 /// `vvm-mesh hexdom INPUT`: a hex-dominant mesh of a closed surface
-Volume_mesh hex_dominant_mesh(const std::string& input, const Hex_dominant_options& options,
+Volume_mesh hex_dominant_mesh(const Surface_source& input, const Hex_dominant_options& options,
                               const Progress& progress = {}, Run_report* report = nullptr);
 
 /// `vvm-mesh optimize MESH`: GSM on the tetrahedra of a mesh made by any mesher (labels kept)
@@ -139,8 +158,22 @@ Volume_mesh optimize_tet_mesh(const Volume_mesh& mesh, const Optimize_options& o
 
 /// `vvm-mesh field INPUT`: the boundary-aligned cross field of a closed surface, in the
 /// frame-field text format (CGAL/Frame_fields/IO/frame_field_text_format.h)
-std::string cross_field(const std::string& input, const Field_options& options, const Progress& progress = {},
+std::string cross_field(const Surface_source& input, const Field_options& options, const Progress& progress = {},
                         Run_report* report = nullptr);
+
+/// a frame field on a tetrahedral mesh as arrays: what the frame-field text format holds
+struct Frame_field_arrays
+{
+  std::vector<std::array<double, 3>> points;
+  std::vector<std::array<std::size_t, 4>> tetrahedra;
+  std::vector<std::array<double, 9>> frames; ///< T row by row (its columns are the axes), per vertex or per cell
+  bool on_cells = false;                     ///< frames per tetrahedron, not per vertex
+};
+/// the field in `text` (frame-field text format); Input_error if it is not one
+Frame_field_arrays frame_field_from_text(const std::string& text);
+/// `field` in the frame-field text format; Input_error if it is not a valid field (counts,
+/// indices, non-finite or singular frames)
+std::string frame_field_text(const Frame_field_arrays& field);
 
 /// the quality table of any tetrahedral or hex-dominant mesh
 Mesh_quality mesh_quality(const Volume_mesh& mesh);

@@ -9,6 +9,7 @@
 
 #include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 #include <CGAL/boost/graph/helpers.h>
@@ -27,25 +28,21 @@ namespace IO {
 
 /*!
  * \ingroup PkgGSMMeshOptimizationIO
- * reads the polygon mesh in the file `fname` into `tm` (cleared first), in any format
- * that `CGAL::IO::read_polygon_mesh()` reads (OFF, OBJ, PLY, STL, GOCAD, VTP, ...),
- * triangulates its faces if needed, and checks that it bounds a volume a mesher can
- * fill. The messages of the exceptions name `fname` and the reason:
+ * triangulates the faces of `tm` if needed and checks that it bounds a volume a mesher can
+ * fill. The messages of the exceptions start with `what`, which names the surface (e.g.
+ * `"the surface in 'fandisk.off'"`), and give the reason:
  *
- * - the file cannot be opened (`"cannot open '...'"`) or is empty
- *   (`"'...' is an empty file"`);
- * - it is not a polygon mesh (`"cannot read '...' as a polygon mesh (OFF, OBJ, PLY, STL, ...)"`)
- *   or has no face (`"'...' contains no faces"`);
- * - a vertex has a NaN or infinite coordinate (`"'...' has a vertex with a non-finite coordinate"`);
- * - the surface has border edges (`"the surface in '...' is open (it has border edges); a closed surface is needed"`);
- * - it self-intersects (`"the surface in '...' self-intersects"`), unless `self_intersects` is given;
- * - it encloses no volume (`"the surface in '...' encloses no volume"`).
+ * - it has no face (`"... has no face"`);
+ * - a vertex has a NaN or infinite coordinate (`"... has a vertex with a non-finite coordinate"`);
+ * - it has border edges (`"... is open (it has border edges); a closed surface is needed"`);
+ * - it self-intersects (`"... self-intersects"`), unless `self_intersects` is given;
+ * - it encloses no volume (`"... encloses no volume"`).
  *
  * \tparam TriangleMesh a model of `MutableFaceGraph` with an internal vertex point
  *   property map, e.g. `CGAL::Surface_mesh<Point_3>`
  *
- * \param fname the path of the file
- * \param tm the surface read
+ * \param tm the surface
+ * \param what the surface's name in the messages
  * \param self_intersects if given, a self-intersecting surface is not an error: whether it
  *   self-intersects is written there instead (`make_mesh_3()` meshes such a surface, with the
  *   inside its domain's ray-parity test sees, which may not be the one intended)
@@ -53,9 +50,50 @@ namespace IO {
  * \throws std::invalid_argument if any of the checks above fails
  */
 template <class TriangleMesh>
-double read_closed_surface(const std::string& fname, TriangleMesh& tm, bool* self_intersects = nullptr)
+double check_closed_surface(TriangleMesh& tm, const std::string& what, bool* self_intersects = nullptr)
 {
   namespace PMP = CGAL::Polygon_mesh_processing;
+  if(num_faces(tm) == 0) throw std::invalid_argument(what + " has no face");
+  const auto vpm = get(CGAL::vertex_point, tm);
+  for(auto v : vertices(tm)) {
+    const auto& p = get(vpm, v);
+    if(!std::isfinite(CGAL::to_double(p.x())) || !std::isfinite(CGAL::to_double(p.y())) ||
+       !std::isfinite(CGAL::to_double(p.z())))
+      throw std::invalid_argument(what + " has a vertex with a non-finite coordinate");
+  }
+  if(!CGAL::is_triangle_mesh(tm)) PMP::triangulate_faces(tm);
+  if(!CGAL::is_closed(tm)) throw std::invalid_argument(what + " is open (it has border edges); a closed surface is needed");
+  const bool intersects = PMP::does_self_intersect(tm);
+  if(intersects && !self_intersects) throw std::invalid_argument(what + " self-intersects");
+  if(self_intersects) *self_intersects = intersects;
+  const double volume = std::abs(CGAL::to_double(PMP::volume(tm)));
+  if(!(volume > 0)) throw std::invalid_argument(what + " encloses no volume");
+  return volume;
+}
+
+/*!
+ * \ingroup PkgGSMMeshOptimizationIO
+ * reads the polygon mesh in the file `fname` into `tm` (cleared first), in any format
+ * that `CGAL::IO::read_polygon_mesh()` reads (OFF, OBJ, PLY, STL, GOCAD, VTP, ...),
+ * and checks it with `check_closed_surface()` (the messages name `"the surface in '...'"`).
+ * Besides those checks, the messages of the exceptions say when:
+ *
+ * - the file cannot be opened (`"cannot open '...'"`) or is empty
+ *   (`"'...' is an empty file"`);
+ * - it is not a polygon mesh (`"cannot read '...' as a polygon mesh (OFF, OBJ, PLY, STL, ...)"`).
+ *
+ * \tparam TriangleMesh a model of `MutableFaceGraph` with an internal vertex point
+ *   property map, e.g. `CGAL::Surface_mesh<Point_3>`
+ *
+ * \param fname the path of the file
+ * \param tm the surface read
+ * \param self_intersects as in `check_closed_surface()`
+ * \returns the volume enclosed by `tm`, positive
+ * \throws std::invalid_argument if the file cannot be read or a check fails
+ */
+template <class TriangleMesh>
+double read_closed_surface(const std::string& fname, TriangleMesh& tm, bool* self_intersects = nullptr)
+{
   std::ifstream probe(fname, std::ios::binary | std::ios::ate);
   if(!probe) throw std::invalid_argument("cannot open '" + fname + "'");
   if(probe.tellg() <= 0) throw std::invalid_argument("'" + fname + "' is an empty file");
@@ -63,24 +101,45 @@ double read_closed_surface(const std::string& fname, TriangleMesh& tm, bool* sel
   clear(tm);
   if(!CGAL::IO::read_polygon_mesh(fname, tm))
     throw std::invalid_argument("cannot read '" + fname + "' as a polygon mesh (OFF, OBJ, PLY, STL, ...)");
-  if(num_faces(tm) == 0) throw std::invalid_argument("'" + fname + "' contains no faces");
-  const auto vpm = get(CGAL::vertex_point, tm);
-  for(auto v : vertices(tm)) {
-    const auto& p = get(vpm, v);
-    if(!std::isfinite(CGAL::to_double(p.x())) || !std::isfinite(CGAL::to_double(p.y())) ||
-       !std::isfinite(CGAL::to_double(p.z())))
-      throw std::invalid_argument("'" + fname + "' has a vertex with a non-finite coordinate");
+  return check_closed_surface(tm, "the surface in '" + fname + "'", self_intersects);
+}
+
+/*!
+ * \ingroup PkgGSMMeshOptimizationIO
+ * builds `tm` (cleared first) from the polygon soup `points`, `polygons` (each polygon a
+ * range of indices into `points`, three or more) and checks it with
+ * `check_closed_surface()` (the messages name `"the surface"`). Besides those checks, the
+ * messages of the exceptions say when a polygon has fewer than three vertices or an index
+ * out of range, or when the polygons do not form a polygon mesh (a non-manifold edge or
+ * vertex, or inconsistent orientations).
+ *
+ * \tparam PointRange a random access range of points convertible to `tm`'s points
+ * \tparam PolygonRange a random access range of ranges of `std::size_t`
+ * \throws std::invalid_argument if a check fails
+ */
+template <class PointRange, class PolygonRange, class TriangleMesh>
+double closed_surface_from_polygon_soup(const PointRange& points, const PolygonRange& polygons, TriangleMesh& tm,
+                                        bool* self_intersects = nullptr)
+{
+  namespace PMP = CGAL::Polygon_mesh_processing;
+  clear(tm);
+  if(polygons.empty()) throw std::invalid_argument("the surface has no face");
+  std::size_t i = 0;
+  for(const auto& polygon : polygons) {
+    if(polygon.size() < 3)
+      throw std::invalid_argument("face " + std::to_string(i) + " of the surface has fewer than 3 vertices");
+    for(const auto v : polygon)
+      if(v >= points.size())
+        throw std::invalid_argument("face " + std::to_string(i) + " of the surface has the vertex index " +
+                                    std::to_string(v) + ", out of range (" + std::to_string(points.size()) +
+                                    " vertices)");
+    ++i;
   }
-  if(!CGAL::is_triangle_mesh(tm)) PMP::triangulate_faces(tm);
-  if(!CGAL::is_closed(tm))
-    throw std::invalid_argument("the surface in '" + fname +
-                                "' is open (it has border edges); a closed surface is needed");
-  const bool intersects = PMP::does_self_intersect(tm);
-  if(intersects && !self_intersects) throw std::invalid_argument("the surface in '" + fname + "' self-intersects");
-  if(self_intersects) *self_intersects = intersects;
-  const double volume = std::abs(CGAL::to_double(PMP::volume(tm)));
-  if(!(volume > 0)) throw std::invalid_argument("the surface in '" + fname + "' encloses no volume");
-  return volume;
+  if(!PMP::is_polygon_soup_a_polygon_mesh(polygons))
+    throw std::invalid_argument("the faces do not form a polygon mesh (a non-manifold edge or vertex, a repeated "
+                                "vertex in a face, or neighbouring faces oriented the opposite way)");
+  PMP::polygon_soup_to_polygon_mesh(points, polygons, tm);
+  return check_closed_surface(tm, "the surface", self_intersects);
 }
 
 /*!
