@@ -369,6 +369,45 @@ class TestErrors:
         assert len(marks) >= 2 and counted > 100000, (counted, marks[:3], marks[-3:])
 
 
+def mesh_hash(mesh):
+    """a hash of the coordinates, cells and labels of a meshio mesh"""
+    import hashlib
+    h = hashlib.sha256(np.ascontiguousarray(mesh.points, dtype=np.float64).tobytes())
+    for block, labels in zip(mesh.cells, mesh.cell_data.get("subdomain", [None] * len(mesh.cells))):
+        h.update(block.type.encode())
+        h.update(np.ascontiguousarray(block.data, dtype=np.int64).tobytes())
+        if labels is not None:
+            h.update(np.ascontiguousarray(labels, dtype=np.int64).tobytes())
+    return h.hexdigest()
+
+
+class TestDeterminism:
+    """the same input, options and seed give bit-identical meshes with 1, 2 and 4 threads, and
+    again after another mesh was made in the same process"""
+
+    def check(self, run):
+        hashes = [mesh_hash(run(threads)) for threads in (1, 2, 4)]
+        vvm.tet_mesh(data("sphere966.off"), vertices=500, seed=7)  # something else in between
+        hashes.append(mesh_hash(run(2)))
+        assert len(set(hashes)) == 1, hashes
+
+    def test_tet_mesh_gsm(self):
+        self.check(lambda t: vvm.tet_mesh(data("fandisk.off"), vertices=1500, threads=t))
+
+    def test_tet_mesh_lattice(self):
+        self.check(lambda t: vvm.tet_mesh(data("fandisk.off"), method="bcc", vertices=1500, threads=t))
+
+    def test_optimize(self):
+        source = meshio.read(data("ball_in_box.mesh"))
+        self.check(lambda t: vvm.optimize(source, threads=t))
+
+    def test_hex_dominant(self):
+        self.check(lambda t: vvm.hex_dominant(data("fandisk.off"), particles=1500, threads=t))
+
+    def test_cross_field(self):
+        self.check(lambda t: vvm.cross_field(data("fandisk.off"), vertices=1000).to_meshio())
+
+
 class TestSameAsCpp:
     """the module's results equal vvm-mesh's (the same front end) for the same options and seed"""
 

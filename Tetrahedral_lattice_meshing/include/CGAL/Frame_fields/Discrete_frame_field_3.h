@@ -19,6 +19,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -68,7 +69,8 @@ public:
    *   `Frame_location::VERTICES`)
    * \param frames one frame \f$ T \f$ per vertex or per cell, as `location` says
    * \throws std::invalid_argument on an empty mesh, a count of frames that does not
-   *   match, a cell index out of range, a non-finite point, or a degenerate frame
+   *   match, a cell index out of range, a non-finite point or one beyond 1e100 in magnitude,
+   *   or a degenerate frame
    */
   Discrete_frame_field_3(std::vector<Point_3> points, std::vector<Cell> cells,
                          std::vector<Matrix> frames, Frame_location location)
@@ -89,6 +91,10 @@ public:
       if(!xyz_.back().allFinite())
         throw std::invalid_argument(std::string(who) + "a vertex has a non-finite coordinate");
     }
+    // the point location grids sum and multiply coordinates: keep them far from overflow
+    for(const Eigen::Vector3d& x : xyz_)
+      if(!(x.cwiseAbs().maxCoeff() <= 1e100))
+        throw std::invalid_argument(std::string(who) + "a vertex has a coordinate beyond 1e100 in magnitude");
     for(const Cell& c : cells_)
       for(std::size_t v : c)
         if(v >= points_.size())

@@ -7,7 +7,7 @@
 #ifndef CGAL_GSM_MESH_OPTIMIZATION_IO_READ_CLOSED_SURFACE_H
 #define CGAL_GSM_MESH_OPTIMIZATION_IO_READ_CLOSED_SURFACE_H
 
-#include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
+#include <CGAL/IO/polygon_soup_io.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
@@ -17,10 +17,14 @@
 
 #include <boost/graph/graph_traits.hpp>
 
+#include <cctype>
 #include <cmath>
+#include <cstdint>
 #include <fstream>
+#include <sstream>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace CGAL {
 namespace GSM_mesh_optimization {
@@ -80,6 +84,9 @@ double check_closed_surface(TriangleMesh& tm, const std::string& what, bool* sel
  *
  * - the file cannot be opened (`"cannot open '...'"`) or is empty
  *   (`"'...' is an empty file"`);
+ * - its header declares more vertices, faces or elements than the file can hold (OFF, PLY),
+ *   a PLY property before any element, or PLY vertex coordinates that are not float or
+ *   double (CGAL 5.5's PLY reader does not survive either);
  * - it is not a polygon mesh (`"cannot read '...' as a polygon mesh (OFF, OBJ, PLY, STL, ...)"`).
  *
  * \tparam TriangleMesh a model of `MutableFaceGraph` with an internal vertex point
@@ -91,17 +98,124 @@ double check_closed_surface(TriangleMesh& tm, const std::string& what, bool* sel
  * \returns the volume enclosed by `tm`, positive
  * \throws std::invalid_argument if the file cannot be read or a check fails
  */
+namespace internal {
+
+/// the lowercase extension of `fname`, with its dot
+inline std::string lowercase_extension(const std::string& fname)
+{
+  const std::size_t dot = fname.find_last_of('.'), slash = fname.find_last_of("/\\");
+  if(dot == std::string::npos || (slash != std::string::npos && dot < slash)) return "";
+  std::string e = fname.substr(dot);
+  for(char& c : e) c = char(std::tolower(static_cast<unsigned char>(c)));
+  return e;
+}
+
+/// refuses the headers CGAL 5.5's readers would act on blindly: a PLY "property" before
+/// any "element" (CGAL's PLY reader writes through an empty vector's back()), vertex
+/// coordinates of another type than float or double (it casts them to either), and element
+/// or OFF counts larger than a file of `size` bytes can hold (each item takes a byte at
+/// least; CGAL reserves memory for the counts it reads)
+inline void check_surface_file_header(const std::string& fname, std::istream& is, std::uintmax_t size)
+{
+  const std::string extension = lowercase_extension(fname);
+  auto too_many = [&](const std::string& what, double count) {
+    if(count > double(size))
+      throw std::invalid_argument("'" + fname + "' declares " + what + " than its " + std::to_string(size) +
+                                  " bytes can hold");
+  };
+  if(extension == ".ply") {
+    std::string line, element;
+    for(int n = 0; n < 100000 && std::getline(is, line); ++n) {
+      std::istringstream words(line);
+      std::string keyword;
+      words >> keyword;
+      if(keyword == "end_header") return;
+      if(keyword == "property") {
+        if(element.empty())
+          throw std::invalid_argument("the PLY header of '" + fname + "' has a property before any element");
+        // CGAL reads a vertex's x, y, z as float or double, whatever their declared type
+        std::string type, name;
+        words >> type >> name;
+        if((element == "vertex" || element == "vertices") && (name == "x" || name == "y" || name == "z") &&
+           type != "float" && type != "float32" && type != "double" && type != "float64")
+          throw std::invalid_argument("the PLY header of '" + fname + "' declares the vertex coordinate " + name +
+                                      " as " + type + "; float or double is needed");
+      }
+      if(keyword == "element") {
+        double count = 0;
+        if(words >> element >> count) too_many("more " + element + " elements", count);
+        else element = "?";
+      }
+    }
+  } else if(extension == ".off") {
+    std::string token;
+    // the keyword line (OFF, COFF, NOFF, 4OFF, ...; optional), comments, then the counts
+    double counts[2] = {0, 0};
+    int found = 0;
+    while(found < 2 && is >> token) {
+      if(token[0] == '#') {
+        std::getline(is, token);
+        continue;
+      }
+      if(token.find("OFF") != std::string::npos) continue;
+      std::istringstream number(token);
+      double value;
+      if(!(number >> value)) return; // CGAL's reader refuses it
+      counts[found++] = value;
+    }
+    too_many("more vertices", counts[0]);
+    too_many("more faces", counts[1]);
+  }
+}
+
+/// closed_surface_from_polygon_soup(), its messages naming the surface `what`
+template <class PointRange, class PolygonRange, class TriangleMesh>
+double closed_surface_from_polygon_soup(const PointRange& points, const PolygonRange& polygons, TriangleMesh& tm,
+                                        const std::string& what, bool* self_intersects)
+{
+  namespace PMP = CGAL::Polygon_mesh_processing;
+  clear(tm);
+  if(polygons.empty()) throw std::invalid_argument(what + " has no face");
+  std::size_t i = 0;
+  for(const auto& polygon : polygons) {
+    if(polygon.size() < 3)
+      throw std::invalid_argument("face " + std::to_string(i) + " of " + what + " has fewer than 3 vertices");
+    for(const auto v : polygon)
+      if(v >= points.size())
+        throw std::invalid_argument("face " + std::to_string(i) + " of " + what + " has the vertex index " +
+                                    std::to_string(v) + ", out of range (" + std::to_string(points.size()) +
+                                    " vertices)");
+    ++i;
+  }
+  if(!PMP::is_polygon_soup_a_polygon_mesh(polygons))
+    throw std::invalid_argument("the faces of " + what + " do not form a polygon mesh (a non-manifold edge or vertex, a repeated "
+                                "vertex in a face, or neighbouring faces oriented the opposite way)");
+  PMP::polygon_soup_to_polygon_mesh(points, polygons, tm);
+  return check_closed_surface(tm, what, self_intersects);
+}
+
+} // namespace internal
+
 template <class TriangleMesh>
 double read_closed_surface(const std::string& fname, TriangleMesh& tm, bool* self_intersects = nullptr)
 {
   std::ifstream probe(fname, std::ios::binary | std::ios::ate);
   if(!probe) throw std::invalid_argument("cannot open '" + fname + "'");
-  if(probe.tellg() <= 0) throw std::invalid_argument("'" + fname + "' is an empty file");
+  const std::streamoff size = probe.tellg();
+  if(size <= 0) throw std::invalid_argument("'" + fname + "' is an empty file");
+  probe.seekg(0);
+  internal::check_surface_file_header(fname, probe, std::uintmax_t(size));
   probe.close();
+  // a soup first: CGAL 5.5's face graph builders index the points with the file's face
+  // indices unchecked; the soup's are checked before the mesh is built
+  typedef typename boost::property_traits<typename boost::property_map<TriangleMesh, CGAL::vertex_point_t>::type>::value_type Point;
+  std::vector<Point> points;
+  std::vector<std::vector<std::size_t>> polygons;
   clear(tm);
-  if(!CGAL::IO::read_polygon_mesh(fname, tm))
+  if(!CGAL::IO::read_polygon_soup(fname, points, polygons, CGAL::parameters::verbose(false)))
     throw std::invalid_argument("cannot read '" + fname + "' as a polygon mesh (OFF, OBJ, PLY, STL, ...)");
-  return check_closed_surface(tm, "the surface in '" + fname + "'", self_intersects);
+  return internal::closed_surface_from_polygon_soup(points, polygons, tm, "the surface in '" + fname + "'",
+                                                    self_intersects);
 }
 
 /*!
@@ -121,25 +235,7 @@ template <class PointRange, class PolygonRange, class TriangleMesh>
 double closed_surface_from_polygon_soup(const PointRange& points, const PolygonRange& polygons, TriangleMesh& tm,
                                         bool* self_intersects = nullptr)
 {
-  namespace PMP = CGAL::Polygon_mesh_processing;
-  clear(tm);
-  if(polygons.empty()) throw std::invalid_argument("the surface has no face");
-  std::size_t i = 0;
-  for(const auto& polygon : polygons) {
-    if(polygon.size() < 3)
-      throw std::invalid_argument("face " + std::to_string(i) + " of the surface has fewer than 3 vertices");
-    for(const auto v : polygon)
-      if(v >= points.size())
-        throw std::invalid_argument("face " + std::to_string(i) + " of the surface has the vertex index " +
-                                    std::to_string(v) + ", out of range (" + std::to_string(points.size()) +
-                                    " vertices)");
-    ++i;
-  }
-  if(!PMP::is_polygon_soup_a_polygon_mesh(polygons))
-    throw std::invalid_argument("the faces do not form a polygon mesh (a non-manifold edge or vertex, a repeated "
-                                "vertex in a face, or neighbouring faces oriented the opposite way)");
-  PMP::polygon_soup_to_polygon_mesh(points, polygons, tm);
-  return check_closed_surface(tm, "the surface", self_intersects);
+  return internal::closed_surface_from_polygon_soup(points, polygons, tm, "the surface", self_intersects);
 }
 
 /*!

@@ -48,7 +48,8 @@ public:
     for(;;) {
       double cells = 1;
       for(int a = 0; a < 3; ++a) {
-        dims_[a] = int(std::clamp(std::ceil(extent[a] / h), 1., 1e6));
+        const double n = std::ceil(extent[a] / h);
+        dims_[a] = n >= 1 ? int(std::min(n, 1e6)) : 1; // NaN (inf / inf): one layer
         cells *= dims_[a];
       }
       if(cells <= 8. * double(lo.size()) + 64) break;

@@ -1,0 +1,17 @@
+// Copyright (c) 2026 VVM contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Fuzz target: the MEDIT (.mesh) reader of Hex_dominant_meshing, and its writer's round trip.
+
+#include "volume_mesh_round_trip.h"
+
+#include <CGAL/Hex_dominant_meshing/IO/read_MEDIT.h>
+#include <CGAL/Hex_dominant_meshing/IO/write_MEDIT.h>
+
+VVM_FUZZ_TARGET(read_MEDIT)
+{
+  namespace IO = CGAL::Hex_dominant_meshing::IO;
+  return vvm_fuzz::check_round_trip(
+      data, size, [](std::istream& is, vvm_fuzz::Mesh& m) { IO::read_MEDIT(is, m); },
+      [](std::ostream& os, const vvm_fuzz::Mesh& m) { IO::write_MEDIT(os, m); });
+}
