@@ -16,8 +16,8 @@ cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER=clang++
       -DBUILD_TESTING=OFF -DVVM_BUILD_EXAMPLES=OFF -DVVM_BUILD_BENCHMARKS=OFF -DVVM_BUILD_TOOLS=OFF > /dev/null
 cmake --build build-fuzz -j2 --target "${targets[@]/#/fuzz_}"
 mkdir -p build-fuzz/logs
-# UBSan halts on its first report, except those documented in fuzz/ubsan_suppressions.txt
-export UBSAN_OPTIONS="halt_on_error=1:print_stacktrace=1:suppressions=$PWD/fuzz/ubsan_suppressions.txt"
+# UBSan halts on its first report, except those documented in test/sanitizers/ubsan.supp
+export UBSAN_OPTIONS="halt_on_error=1:print_stacktrace=1:suppressions=$PWD/test/sanitizers/ubsan.supp"
 run() {
   local t=$1
   mkdir -p "build-fuzz/corpus/$t" "build-fuzz/artifacts/$t"

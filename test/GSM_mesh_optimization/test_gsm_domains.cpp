@@ -8,10 +8,12 @@
 // function, a Parallel_tag triangulation, a 3D image and a polyhedral complex.
 
 #include "gsm_test_support.h"
+#include "output_hash.h"
 
 namespace {
 
-void test_cube_with_features()
+// the cube [-1, 1]^3, two triangles a face
+Surface_mesh cube_surface()
 {
   Surface_mesh sm;
   std::vector<Surface_mesh::Vertex_index> v;
@@ -19,7 +21,12 @@ void test_cube_with_features()
   const int quads[6][4] = {{0, 1, 3, 2}, {4, 6, 7, 5}, {0, 4, 5, 1}, {2, 3, 7, 6}, {0, 2, 6, 4}, {1, 5, 7, 3}};
   for(const auto& q : quads) sm.add_face(v[q[0]], v[q[1]], v[q[2]], v[q[3]]);
   CGAL::Polygon_mesh_processing::triangulate_faces(sm);
-  Cube_domain domain(sm);
+  return sm;
+}
+
+void test_cube_with_features()
+{
+  Cube_domain domain(cube_surface());
   domain.detect_features(60);
   CGAL::Mesh_criteria_3<Cube_tr> criteria(params::edge_size = 0.3, params::facet_angle = 25,
                                           params::facet_size = 0.3, params::facet_distance = 0.03,
@@ -167,7 +174,7 @@ void test_threads_fields_and_boundary()
   try {
     Implicit_c3t3 copy = initial;
     CGAL::gsm_optimize_mesh_3(copy, domain, GSM::parameters::mean_angle_moves(-1));
-  } catch(const std::invalid_argument& e) { refused = std::string(e.what()).find("mean-angle") != std::string::npos; }
+  } catch(const std::invalid_argument& e) { refused = std::string(e.what()).find("mean_angle_moves") != std::string::npos; }
   VVM_CHECK(refused);
 
   // h and 4h (a power of two: the fitted scale is then exactly the same)
@@ -229,6 +236,53 @@ void test_threads_fields_and_boundary()
   VVM_CHECK(complex_is_valid(c3t3));
   VVM_CHECK(before > 0 && after <= 1.1 * before);
   VVM_CHECK(GSM::mesh_quality_statistics(c3t3).min_dihedral_angle > min_before + 5);
+}
+
+// Determinism: the same complex optimized with 1, 2 and 4 threads, and again after another
+// complex was optimized in a fragmented heap (its vertices and cells then lie elsewhere and
+// in another order of addresses), gives the same mesh bit for bit: on an implicit sphere and
+// torus and on a polyhedral cube with features (curves and corners).
+template <class C3T3, class Domain>
+void check_deterministic(const char* name, const C3T3& initial, const Domain& domain, const C3T3& other)
+{
+  auto optimized = [&](int threads) {
+    C3T3 c3t3 = initial;
+    CGAL::gsm_optimize_mesh_3(c3t3, domain, GSM::parameters::number_of_threads(threads));
+    return vvm_test::complex_hash(c3t3);
+  };
+  const std::uint64_t one = optimized(1);
+  const std::uint64_t two = optimized(2), four = optimized(4);
+  std::uint64_t after_other = 0;
+  {
+    vvm_test::Fragmented_heap heap;
+    C3T3 c = other;
+    CGAL::gsm_optimize_mesh_3(c, domain, GSM::parameters::number_of_threads(2));
+    after_other = optimized(2);
+  }
+  std::cout << name << ": output hash " << std::hex << one << " (1 thread), " << two << " (2), " << four
+            << " (4), " << after_other << " (2, after another mesh)" << std::dec << "\n";
+  VVM_CHECK(vvm_test::complex_hash(C3T3(initial)) == vvm_test::complex_hash(initial));
+  VVM_CHECK(vvm_test::complex_hash(initial) != one);
+  VVM_CHECK(one == two);
+  VVM_CHECK(one == four);
+  VVM_CHECK(one == after_other);
+}
+
+void test_determinism()
+{
+  check_deterministic("sphere", make_sphere_mesh(0.2), sphere_domain(), make_sphere_mesh(0.3));
+  check_deterministic("torus", make_implicit_mesh(torus_function, 0.1), implicit_domain(torus_function),
+                      make_implicit_mesh(torus_function, 0.15));
+  Cube_domain domain(cube_surface());
+  domain.detect_features(60);
+  auto cube_mesh = [&](double size) {
+    CGAL::Mesh_criteria_3<Cube_tr> criteria(params::edge_size = size, params::facet_angle = 25,
+                                            params::facet_size = size, params::facet_distance = size / 10,
+                                            params::cell_radius_edge_ratio = 3, params::cell_size = size);
+    CGAL::get_default_random() = CGAL::Random(1);
+    return CGAL::make_mesh_3<Cube_c3t3>(domain, criteria, params::no_perturb(), params::no_exude());
+  };
+  check_deterministic("cube with features", cube_mesh(0.3), domain, cube_mesh(0.4));
 }
 
 void test_several_subdomains()
@@ -294,5 +348,6 @@ int main(int argc, char** argv)
   return vvm_test::run(argc, argv, "test_gsm_domains", {
       {"cube_with_features", test_cube_with_features},
       {"threads_fields_and_boundary", test_threads_fields_and_boundary},
-      {"several_subdomains", test_several_subdomains}});
+      {"several_subdomains", test_several_subdomains},
+      {"determinism", test_determinism}});
 }

@@ -583,7 +583,7 @@ void check_surface_vertex_collapses(const char* name, const Domain& domain, doub
   const GSM::internal::Metric_field metric = GSM::internal::Metric_field::uniform(GSM::internal::estimated_edge_length(c3t3));
   const GSM::internal::Mesh_energy<Implicit_c3t3> energy{c3t3, metric, GSM::Shape_matching_energy::GSM};
   auto [sum, count] = energy.total();
-  const GSM::internal::Vertex_smoother<Implicit_c3t3, Domain> smoother(c3t3, &domain, energy, false);
+  GSM::internal::Vertex_smoother<Implicit_c3t3, Domain> smoother(c3t3, &domain, energy, false);
   GSM::internal::Surface_vertex_collapse<Implicit_c3t3, Domain> collapses(
       c3t3, energy, sum, count, smoother, GSM::internal::Angle_penalty::for_bound(30));
   std::map<Vertex_handle, std::pair<Bare_point, int>> before;

@@ -8,6 +8,7 @@
 // boundary closer to a sphere; bad parameters of make_hex_dominant_mesh_3 throw.
 
 #include "hex_dominant_test_support.h"
+#include "output_hash.h"
 
 namespace {
 
@@ -189,6 +190,61 @@ double boundary_facet_distance(const Cube_c3t3& c3t3, const Surface_mesh& surfac
   return std::sqrt(d2);
 }
 
+// Determinism: make_hex_dominant_mesh_3 on a polyhedral sphere and tets_to_hex_dominant on
+// the Delaunay tets of a jittered cubic grid give bit-identical meshes with 1, 2 and 4
+// threads, and again after another run in a fragmented heap (the objects of the run then lie
+// elsewhere, in another order of addresses).
+template <class Run, class Other>
+void check_deterministic(const char* name, const Run& run, const Other& other)
+{
+  const std::uint64_t one = run(1), two = run(2), four = run(4);
+  std::uint64_t after_other = 0;
+  {
+    vvm_test::Fragmented_heap heap;
+    other();
+    after_other = run(2);
+  }
+  std::cout << name << ": output hash " << std::hex << one << " (1 thread), " << two << " (2), " << four
+            << " (4), " << after_other << " (2, after another run)" << std::dec << "\n";
+  VVM_CHECK(one == two);
+  VVM_CHECK(one == four);
+  VVM_CHECK(one == after_other);
+}
+
+void test_determinism()
+{
+  Surface_mesh surface;
+  VVM_CHECK(CGAL::IO::read_polygon_mesh(vvm_test::data_file("sphere966.off"), surface));
+  Cube_domain domain(surface);
+  domain.detect_features(60);
+  auto mesh = [&](int threads, std::size_t particles) {
+    return CGAL::make_hex_dominant_mesh_3<Cube_c3t3>(domain, Constant_field(),
+        TLM::parameters::number_of_particles(particles, TLM::parameters::number_of_threads(threads,
+            CGAL::parameters::random_seed(3u))));
+  };
+  check_deterministic("make_hex_dominant_mesh_3, sphere",
+      [&](int threads) { return vvm_test::hex_dominant_hash(mesh(threads, 1500)); },
+      [&] { mesh(2, 1000); });
+
+  auto grid = [](int n) {
+    CGAL::Random random(7);
+    std::vector<Point_3> points;
+    for(int i = 0; i < n; ++i)
+      for(int j = 0; j < n; ++j)
+        for(int k = 0; k < n; ++k)
+          points.emplace_back(i + random.get_double(-0.1, 0.1), j + random.get_double(-0.1, 0.1),
+                              k + random.get_double(-0.1, 0.1));
+    return Delaunay(points.begin(), points.end());
+  };
+  const Delaunay tets = grid(9), other_tets = grid(7);
+  auto merged = [&](int threads, const Delaunay& tr) {
+    return CGAL::tets_to_hex_dominant(tr, TLM::parameters::number_of_threads(threads));
+  };
+  check_deterministic("tets_to_hex_dominant, jittered grid",
+      [&](int threads) { return vvm_test::hex_dominant_hash(merged(threads, tets)); },
+      [&] { merged(2, other_tets); });
+}
+
 // the boundary refinement of section 4.4.2 on a sphere: surface points are added where the
 // tets' facets cut the sphere too deep, and the facets come closer to it
 void test_boundary_refinement()
@@ -229,5 +285,6 @@ int main(int argc, char** argv)
       {"make_hex_dominant_mesh_on_warped_cube", test_make_hex_dominant_mesh_on_warped_cube},
       {"make_hex_dominant_mesh_on_graded_cube", test_make_hex_dominant_mesh_on_graded_cube},
       {"flat_tet_on_boundary_quad", test_flat_tet_on_boundary_quad},
-      {"boundary_refinement", test_boundary_refinement}});
+      {"boundary_refinement", test_boundary_refinement},
+      {"determinism", test_determinism}});
 }

@@ -9,10 +9,12 @@
 // first: Mesh_3 includes TBB headers the others rely on
 #include <CGAL/make_mesh_3.h>
 
+#include "output_hash.h"
 #include "vvm_test.h"
 
 #include <CGAL/Frame_fields/Closed_form_frame_field_3.h>
 #include <CGAL/Frame_fields/Constant_frame_field_3.h>
+#include <CGAL/Frame_fields/generate_cross_field_3.h>
 #include <CGAL/GSM_mesh_optimization/mesh_quality_statistics.h>
 #include <CGAL/Tetrahedral_lattice_meshing/Lattice.h>
 #include <CGAL/Tetrahedral_lattice_meshing/alignment_error.h>
@@ -29,11 +31,14 @@
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 #include <CGAL/Labeled_mesh_domain_3.h>
 #include <CGAL/Mesh_complex_3_in_triangulation_3.h>
+#include <CGAL/Mesh_criteria_3.h>
 #include <CGAL/Mesh_triangulation_3.h>
 #include <CGAL/Polyhedral_mesh_domain_with_features_3.h>
 #include <CGAL/Random.h>
 #include <CGAL/Real_timer.h>
 #include <CGAL/Surface_mesh.h>
+
+#include <tbb/global_control.h>
 
 #include <Eigen/Geometry>
 #include <Eigen/LU>

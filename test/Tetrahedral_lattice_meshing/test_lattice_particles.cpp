@@ -298,6 +298,73 @@ void test_thread_independence()
 }
 
 // ---------------------------------------------------------------------------------------------
+// 5a. Determinism: lattice_particles_3, make_lattice_mesh_3 and generate_cross_field_3 on the
+// unit sphere give bit-identical outputs with 1, 2 and 4 threads, and again after another run
+// in a fragmented heap (the objects of the run then lie elsewhere, in another address order).
+
+typedef CGAL::Mesh_triangulation_3<Implicit_domain, CGAL::Default, CGAL::Sequential_tag>::type Sphere_tr;
+typedef CGAL::Mesh_complex_3_in_triangulation_3<Sphere_tr> Sphere_c3t3;
+
+// hashes of run(threads) for 1, 2 and 4 threads and for 2 threads after other(), all equal
+template <class Run, class Other>
+void check_deterministic(const char* name, const Run& run, const Other& other)
+{
+  const std::uint64_t one = run(1), two = run(2), four = run(4);
+  std::uint64_t after_other = 0;
+  {
+    vvm_test::Fragmented_heap heap;
+    other();
+    after_other = run(2);
+  }
+  std::cout << name << ": output hash " << std::hex << one << " (1 thread), " << two << " (2), " << four
+            << " (4), " << after_other << " (2, after another run)" << std::dec << "\n";
+  VVM_CHECK(one == two);
+  VVM_CHECK(one == four);
+  VVM_CHECK(one == after_other);
+}
+
+void test_determinism()
+{
+  const Implicit_domain domain = sphere_domain();
+  auto particles = [&](int threads, std::size_t n) {
+    return CGAL::lattice_particles_3(domain, Constant_field(),
+        TLM::parameters::number_of_particles(n, TLM::parameters::number_of_threads(threads,
+            CGAL::parameters::random_seed(5u))));
+  };
+  check_deterministic("lattice_particles_3, sphere",
+      [&](int threads) { return vvm_test::particles_hash(particles(threads, 1200)); },
+      [&] { particles(2, 900); });
+
+  auto mesh = [&](int threads, double l) {
+    return CGAL::make_lattice_mesh_3<Sphere_c3t3>(domain, Constant_field(),
+        TLM::parameters::edge_length(l, TLM::parameters::mesh_optimization(TLM::Lattice_mesh_optimization::GSM,
+            TLM::parameters::number_of_threads(threads, CGAL::parameters::random_seed(5u)))));
+  };
+  check_deterministic("make_lattice_mesh_3, sphere",
+      [&](int threads) { return vvm_test::complex_hash(mesh(threads, 0.22)); },
+      [&] { mesh(2, 0.3); });
+
+  auto complex = [&](double size) {
+    CGAL::Mesh_criteria_3<Sphere_tr> criteria(CGAL::parameters::facet_angle = 25, CGAL::parameters::facet_size = size,
+                                              CGAL::parameters::facet_distance = size / 10,
+                                              CGAL::parameters::cell_radius_edge_ratio = 3,
+                                              CGAL::parameters::cell_size = size);
+    CGAL::get_default_random() = CGAL::Random(1);
+    return CGAL::make_mesh_3<Sphere_c3t3>(domain, criteria, CGAL::parameters::no_perturb(),
+                                          CGAL::parameters::no_exude());
+  };
+  const Sphere_c3t3 input = complex(0.25), other_input = complex(0.35);
+  // generate_cross_field_3 has no thread count: TBB's default, limited here
+  auto field = [&](int threads, const Sphere_c3t3& c3t3) {
+    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, std::size_t(threads));
+    return CGAL::Frame_fields::generate_cross_field_3(c3t3);
+  };
+  check_deterministic("generate_cross_field_3, sphere",
+      [&](int threads) { return vvm_test::frame_field_hash(field(threads, input).field); },
+      [&] { field(2, other_input); });
+}
+
+// ---------------------------------------------------------------------------------------------
 // 5b. Without multiresolution_levels, BCC and FCC particles (1,500 here) come from the run of
 // 0 or 1 level of the lower energy per particle (compared before the last round, which only the
 // one kept runs): the default equals that one of the two runs made with the levels given.
@@ -636,6 +703,7 @@ int main(int argc, char** argv)
       {"particle_kinds_on_cube", test_particle_kinds_on_cube},
       {"particle_kinds_on_sphere", test_particle_kinds_on_sphere},
       {"thread_independence", test_thread_independence},
+      {"determinism", test_determinism},
       {"multiresolution_choice", test_multiresolution_choice},
       {"polishing_bound", test_polishing_bound},
       {"lattice_mesh_on_cube", test_lattice_mesh_on_cube},

@@ -140,11 +140,18 @@ gsm_optimize(C3T3& c3t3, const MeshDomain* domain, bool boundary_fixed, const Na
   options.energy = choose_parameter(get_parameter(np, GSM::internal_np::energy),
                                     GSM::Shape_matching_energy::GSM);
   const int threads = choose_parameter(get_parameter(np, GSM::internal_np::number_of_threads), 0);
-  if(options.max_rounds < 0 || options.time_limit < 0 || !(options.convergence >= 0) || threads < 0 ||
-     !(options.sliver_bound >= 0 && options.sliver_bound < 70.5) || !(options.mean_angle_moves >= 0) ||
-     !(options.boundary_distance >= 0 && options.boundary_distance < HUGE_VAL))
-    throw std::invalid_argument("GSM: negative iteration count, time limit, convergence threshold, "
-                                "thread count, mean-angle threshold or boundary distance, or a sliver bound outside [0, 70.5) degrees");
+  auto refuse_unless = [](bool ok, const char* what) {
+    if(!ok) throw std::invalid_argument(std::string("GSM: ") + what);
+  };
+  refuse_unless(options.max_rounds >= 0, "number_of_iterations must be non-negative");
+  refuse_unless(options.time_limit >= 0, "maximum_running_time must be non-negative (0: no limit)");
+  refuse_unless(options.convergence >= 0, "convergence_threshold must be non-negative");
+  refuse_unless(threads >= 0, "number_of_threads must be non-negative (0: TBB's choice)");
+  refuse_unless(options.sliver_bound >= 0 && options.sliver_bound < 70.5,
+                "sliver_bound must be in [0, 70.5) degrees (the sliver bound)");
+  refuse_unless(options.mean_angle_moves >= 0, "mean_angle_moves must be non-negative");
+  refuse_unless(options.boundary_distance >= 0 && options.boundary_distance < HUGE_VAL,
+                "boundary_distance must be non-negative and finite");
 
   auto visitor = get_parameter(np, CGAL::internal_np::visitor);
   if constexpr(!std::is_same<decltype(visitor), CGAL::internal_np::Param_not_found>::value)

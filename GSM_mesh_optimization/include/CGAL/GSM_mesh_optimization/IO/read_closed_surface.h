@@ -13,6 +13,7 @@
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 #include <CGAL/boost/graph/helpers.h>
+#include <CGAL/exceptions.h>
 #include <CGAL/number_utils.h>
 
 #include <boost/graph/graph_traits.hpp>
@@ -21,6 +22,7 @@
 #include <cmath>
 #include <cstdint>
 #include <fstream>
+#include <new>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -40,7 +42,9 @@ namespace IO {
  * - a vertex has a NaN or infinite coordinate (`"... has a vertex with a non-finite coordinate"`);
  * - it has border edges (`"... is open (it has border edges); a closed surface is needed"`);
  * - it self-intersects (`"... self-intersects"`), unless `self_intersects` is given;
- * - it encloses no volume (`"... encloses no volume"`).
+ * - it encloses no volume (`"... encloses no volume"`);
+ * - a predicate of an inexact kernel (e.g. `Simple_cartesian<double>`) fails on degenerate
+ *   faces (`"... is too degenerate for the kernel's predicates ..."`).
  *
  * \tparam TriangleMesh a model of `MutableFaceGraph` with an internal vertex point
  *   property map, e.g. `CGAL::Surface_mesh<Point_3>`
@@ -65,12 +69,19 @@ double check_closed_surface(TriangleMesh& tm, const std::string& what, bool* sel
        !std::isfinite(CGAL::to_double(p.z())))
       throw std::invalid_argument(what + " has a vertex with a non-finite coordinate");
   }
-  if(!CGAL::is_triangle_mesh(tm)) PMP::triangulate_faces(tm);
-  if(!CGAL::is_closed(tm)) throw std::invalid_argument(what + " is open (it has border edges); a closed surface is needed");
-  const bool intersects = PMP::does_self_intersect(tm);
+  bool intersects = false;
+  double volume = 0;
+  try {
+    if(!CGAL::is_triangle_mesh(tm)) PMP::triangulate_faces(tm);
+    if(!CGAL::is_closed(tm)) throw std::invalid_argument(what + " is open (it has border edges); a closed surface is needed");
+    intersects = PMP::does_self_intersect(tm);
+    volume = std::abs(CGAL::to_double(PMP::volume(tm)));
+  } catch(const CGAL::Failure_exception& e) { // an inexact kernel's predicate on degenerate faces
+    throw std::invalid_argument(what + " is too degenerate for the kernel's predicates (" + e.expression() +
+                                " failed in CGAL)");
+  }
   if(intersects && !self_intersects) throw std::invalid_argument(what + " self-intersects");
   if(self_intersects) *self_intersects = intersects;
-  const double volume = std::abs(CGAL::to_double(PMP::volume(tm)));
   if(!(volume > 0)) throw std::invalid_argument(what + " encloses no volume");
   return volume;
 }
@@ -117,6 +128,7 @@ inline std::string lowercase_extension(const std::string& fname)
 /// least; CGAL reserves memory for the counts it reads)
 inline void check_surface_file_header(const std::string& fname, std::istream& is, std::uintmax_t size)
 {
+  const std::uintmax_t size_of_file = size;
   const std::string extension = lowercase_extension(fname);
   auto too_many = [&](const std::string& what, double count) {
     if(count > double(size))
@@ -142,29 +154,55 @@ inline void check_surface_file_header(const std::string& fname, std::istream& is
                                       " as " + type + "; float or double is needed");
       }
       if(keyword == "element") {
-        double count = 0;
-        if(words >> element >> count) too_many("more " + element + " elements", count);
-        else element = "?";
+        // CGAL reads the count into a std::size_t: a negative one would wrap around
+        std::string count;
+        if(!(words >> element >> count)) element = "?";
+        else if(!std::isdigit(static_cast<unsigned char>(count[0])))
+          throw std::invalid_argument("the PLY header of '" + fname + "' declares " + count + " " + element +
+                                      " elements; a count is a whole number");
+        else too_many("more " + element + " elements", std::stod(count));
       }
     }
+    // CGAL's reader, given no end of header, reads on into the data as header lines
+    throw std::invalid_argument("the PLY header of '" + fname + "' has no end_header line");
   } else if(extension == ".off") {
     std::string token;
     // the keyword line (OFF, COFF, NOFF, 4OFF, ...; optional), comments, then the counts
     double counts[2] = {0, 0};
     int found = 0;
+    bool binary = false;
     while(found < 2 && is >> token) {
       if(token[0] == '#') {
         std::getline(is, token);
         continue;
       }
-      if(token.find("OFF") != std::string::npos) continue;
+      if(token == "BINARY") binary = true;
+      if(token.find("OFF") != std::string::npos || token == "BINARY") continue;
       std::istringstream number(token);
       double value;
       if(!(number >> value)) return; // CGAL's reader refuses it
       counts[found++] = value;
     }
+    for(double count : counts)
+      if(count < 0 || count != std::floor(count))
+        throw std::invalid_argument("the OFF header of '" + fname + "' declares a negative or fractional vertex or face "
+                                    "count; a count is a whole number");
     too_many("more vertices", counts[0]);
     too_many("more faces", counts[1]);
+    if(binary) return;
+    // each face line starts with its number of vertices, by which CGAL sizes a vector: after
+    // the rest of the counts line and the vertex lines (blank and comment lines skipped)
+    std::string line;
+    std::getline(is, line);
+    for(double n = 0; n < counts[0] + counts[1] && std::getline(is, line);) {
+      std::istringstream words(line);
+      if(!(words >> token) || token[0] == '#') continue;
+      if(n++ < counts[0]) continue;
+      std::istringstream number(token);
+      double size;
+      if(number >> size && !(size >= 0 && size <= double(size_of_file)))
+        throw std::invalid_argument("'" + fname + "' has a face of " + token + " vertices");
+    }
   }
 }
 
@@ -212,7 +250,13 @@ double read_closed_surface(const std::string& fname, TriangleMesh& tm, bool* sel
   std::vector<Point> points;
   std::vector<std::vector<std::size_t>> polygons;
   clear(tm);
-  if(!CGAL::IO::read_polygon_soup(fname, points, polygons, CGAL::parameters::verbose(false)))
+  bool read = false;
+  try {
+    read = CGAL::IO::read_polygon_soup(fname, points, polygons, CGAL::parameters::verbose(false));
+  } catch(const std::length_error&) { // CGAL sizes a face's vector by a count read from the file
+  } catch(const std::bad_alloc&) {
+  }
+  if(!read)
     throw std::invalid_argument("cannot read '" + fname + "' as a polygon mesh (OFF, OBJ, PLY, STL, ...)");
   return internal::closed_surface_from_polygon_soup(points, polygons, tm, "the surface in '" + fname + "'",
                                                     self_intersects);

@@ -154,6 +154,10 @@ public:
   /// whether `v` has a bound of its own, over the floor
   bool has_own_bound(const Vertex_handle& v) const { return vertex_bounds_.count(v) != 0; }
 
+  /// `v` is about to be removed: a vertex made later in its place (the same handle) has
+  /// no bound of its own
+  void forget(const Vertex_handle& v) { vertex_bounds_.erase(v); }
+
   /// the estimate of the largest distance between the initial boundary and the surface (in
   /// either direction) that caps the bounds
   double largest_initial_distance() const { return largest_; }

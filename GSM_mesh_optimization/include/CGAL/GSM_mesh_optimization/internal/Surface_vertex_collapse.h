@@ -63,7 +63,7 @@ public:
   static constexpr double min_gain = 0.5;
 
   Surface_vertex_collapse(C3T3& c3t3, const typename Base::Energy& energy, double& sum, std::size_t& count,
-                          const Smoother& smoother, const Angle_penalty& penalty = Angle_penalty())
+                          Smoother& smoother, const Angle_penalty& penalty = Angle_penalty())
     : Base(c3t3, energy, sum, count), smoother_(smoother), penalty_(penalty)
   {}
 
@@ -115,7 +115,11 @@ public:
   }
 
   /// makes the collapse `p`, found by `best_collapse()` on the triangulation as it is
-  void apply(const Plan& p) { this->collapse(p.v, p.w); }
+  void apply(const Plan& p)
+  {
+    smoother_.boundary_vertex_removed(p.v);
+    this->collapse(p.v, p.w);
+  }
 
 private:
   // the star of a surface vertex: its cells, its neighbours (in the order of the star), its
@@ -238,7 +242,7 @@ private:
     return false;
   }
 
-  const Smoother& smoother_;
+  Smoother& smoother_;
   Angle_penalty penalty_;
 };
 

@@ -427,6 +427,15 @@ public:
       return fidelity_ ? (std::min)(fidelity_->bound(v), fidelity_->largest_initial_distance()) : 0;
   }
 
+  /// the boundary vertex `v` is about to be removed (its handle may come back for a new vertex)
+  void boundary_vertex_removed(const Vertex_handle& v)
+  {
+    if constexpr(std::is_void<MeshDomain>::value)
+      CGAL_USE(v);
+    else if(fidelity_)
+      fidelity_->forget(v);
+  }
+
   /// whether the facets of `v` may stray further than the floor: they did at the start
   bool has_own_boundary_bound(const Vertex_handle& v) const
   {

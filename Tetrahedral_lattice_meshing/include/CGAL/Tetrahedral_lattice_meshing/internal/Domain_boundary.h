@@ -101,6 +101,7 @@ public:
     Criteria criteria(P::edge_size = spacing, P::facet_angle = 25, P::facet_size = spacing,
                       P::facet_distance = 0.02 * finest_spacing, P::cell_radius_edge_ratio = 3,
                       P::cell_size = 2 * spacing);
+    refuse_empty(domain);
     C3T3 c3t3;
     {
       const Reproducible_sampling reproducible(domain); // the boundary must not depend on the process's history
@@ -110,6 +111,25 @@ public:
   }
 
   const MeshDomain& domain() const { return domain_; }
+
+  /// throws unless a point of a grid over the bounding box of `domain` lies inside it: CGAL's
+  /// search for the initial points of make_mesh_3 does not end on a domain with no inside (an
+  /// implicit function positive everywhere, an image of background only)
+  static void refuse_empty(const MeshDomain& domain)
+  {
+    const CGAL::Bbox_3 bb = domain.bbox();
+    const auto is_in_domain = domain.is_in_domain_object();
+    constexpr int n = 24;
+    auto at = [](double lo, double hi, int i) { return lo + (i + 0.5) / n * (hi - lo); };
+    for(int i = 0; i < n; ++i)
+      for(int j = 0; j < n; ++j)
+        for(int k = 0; k < n; ++k)
+          if(is_in_domain(Point_3(at(bb.xmin(), bb.xmax(), i), at(bb.ymin(), bb.ymax(), j),
+                                  at(bb.zmin(), bb.zmax(), k))))
+            return;
+    throw std::invalid_argument("lattice_particles_3: the domain is empty (no point of a 24^3 grid over its "
+                                "bounding box lies inside it)");
+  }
 
   /// the subdomain index of `p`, 0 outside
   Subdomain_index subdomain(const Eigen::Vector3d& p) const
