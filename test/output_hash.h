@@ -8,6 +8,7 @@
 //   hold the same mesh in a different order of their containers hash the same.
 // - Outputs that are arrays (particles, hex-dominant meshes, frame fields) are hashed in
 //   their order, which is part of what the caller gets.
+// check_deterministic() compares the hashes of runs with 1, 2 and 4 threads and after another run.
 
 #ifndef VVM_OUTPUT_HASH_H
 #define VVM_OUTPUT_HASH_H
@@ -20,6 +21,8 @@
 #include <tuple>
 #include <utility>
 #include <vector>
+
+#include "vvm_test.h"
 
 namespace vvm_test {
 
@@ -161,6 +164,25 @@ struct Fragmented_heap
     for(std::size_t i = 0; i < blocks.size(); i += 2) std::vector<char>().swap(blocks[i]);
   }
 };
+
+/// checks that `run(threads)`, the hash of an entry point's output, is the same for 1, 2 and
+/// 4 threads and for 2 threads after `other()` ran in a fragmented heap; prints the hashes
+template <class Run, class Other>
+void check_deterministic(const char* name, const Run& run, const Other& other)
+{
+  const std::uint64_t one = run(1), two = run(2), four = run(4);
+  std::uint64_t after_other = 0;
+  {
+    Fragmented_heap heap;
+    other();
+    after_other = run(2);
+  }
+  std::cout << name << ": output hash " << std::hex << one << " (1 thread), " << two << " (2), " << four
+            << " (4), " << after_other << " (2, after another run)" << std::dec << "\n";
+  VVM_CHECK(one == two);
+  VVM_CHECK(one == four);
+  VVM_CHECK(one == after_other);
+}
 
 } // namespace vvm_test
 

@@ -194,23 +194,6 @@ double boundary_facet_distance(const Cube_c3t3& c3t3, const Surface_mesh& surfac
 // the Delaunay tets of a jittered cubic grid give bit-identical meshes with 1, 2 and 4
 // threads, and again after another run in a fragmented heap (the objects of the run then lie
 // elsewhere, in another order of addresses).
-template <class Run, class Other>
-void check_deterministic(const char* name, const Run& run, const Other& other)
-{
-  const std::uint64_t one = run(1), two = run(2), four = run(4);
-  std::uint64_t after_other = 0;
-  {
-    vvm_test::Fragmented_heap heap;
-    other();
-    after_other = run(2);
-  }
-  std::cout << name << ": output hash " << std::hex << one << " (1 thread), " << two << " (2), " << four
-            << " (4), " << after_other << " (2, after another run)" << std::dec << "\n";
-  VVM_CHECK(one == two);
-  VVM_CHECK(one == four);
-  VVM_CHECK(one == after_other);
-}
-
 void test_determinism()
 {
   Surface_mesh surface;
@@ -222,7 +205,7 @@ void test_determinism()
         TLM::parameters::number_of_particles(particles, TLM::parameters::number_of_threads(threads,
             CGAL::parameters::random_seed(3u))));
   };
-  check_deterministic("make_hex_dominant_mesh_3, sphere",
+  vvm_test::check_deterministic("make_hex_dominant_mesh_3, sphere",
       [&](int threads) { return vvm_test::hex_dominant_hash(mesh(threads, 1500)); },
       [&] { mesh(2, 1000); });
 
@@ -240,7 +223,7 @@ void test_determinism()
   auto merged = [&](int threads, const Delaunay& tr) {
     return CGAL::tets_to_hex_dominant(tr, TLM::parameters::number_of_threads(threads));
   };
-  check_deterministic("tets_to_hex_dominant, jittered grid",
+  vvm_test::check_deterministic("tets_to_hex_dominant, jittered grid",
       [&](int threads) { return vvm_test::hex_dominant_hash(merged(threads, tets)); },
       [&] { merged(2, other_tets); });
 }

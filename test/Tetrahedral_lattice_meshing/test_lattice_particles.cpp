@@ -305,24 +305,6 @@ void test_thread_independence()
 typedef CGAL::Mesh_triangulation_3<Implicit_domain, CGAL::Default, CGAL::Sequential_tag>::type Sphere_tr;
 typedef CGAL::Mesh_complex_3_in_triangulation_3<Sphere_tr> Sphere_c3t3;
 
-// hashes of run(threads) for 1, 2 and 4 threads and for 2 threads after other(), all equal
-template <class Run, class Other>
-void check_deterministic(const char* name, const Run& run, const Other& other)
-{
-  const std::uint64_t one = run(1), two = run(2), four = run(4);
-  std::uint64_t after_other = 0;
-  {
-    vvm_test::Fragmented_heap heap;
-    other();
-    after_other = run(2);
-  }
-  std::cout << name << ": output hash " << std::hex << one << " (1 thread), " << two << " (2), " << four
-            << " (4), " << after_other << " (2, after another run)" << std::dec << "\n";
-  VVM_CHECK(one == two);
-  VVM_CHECK(one == four);
-  VVM_CHECK(one == after_other);
-}
-
 void test_determinism()
 {
   const Implicit_domain domain = sphere_domain();
@@ -331,7 +313,7 @@ void test_determinism()
         TLM::parameters::number_of_particles(n, TLM::parameters::number_of_threads(threads,
             CGAL::parameters::random_seed(5u))));
   };
-  check_deterministic("lattice_particles_3, sphere",
+  vvm_test::check_deterministic("lattice_particles_3, sphere",
       [&](int threads) { return vvm_test::particles_hash(particles(threads, 1200)); },
       [&] { particles(2, 900); });
 
@@ -340,7 +322,7 @@ void test_determinism()
         TLM::parameters::edge_length(l, TLM::parameters::mesh_optimization(TLM::Lattice_mesh_optimization::GSM,
             TLM::parameters::number_of_threads(threads, CGAL::parameters::random_seed(5u)))));
   };
-  check_deterministic("make_lattice_mesh_3, sphere",
+  vvm_test::check_deterministic("make_lattice_mesh_3, sphere",
       [&](int threads) { return vvm_test::complex_hash(mesh(threads, 0.22)); },
       [&] { mesh(2, 0.3); });
 
@@ -359,7 +341,7 @@ void test_determinism()
     tbb::global_control limit(tbb::global_control::max_allowed_parallelism, std::size_t(threads));
     return CGAL::Frame_fields::generate_cross_field_3(c3t3);
   };
-  check_deterministic("generate_cross_field_3, sphere",
+  vvm_test::check_deterministic("generate_cross_field_3, sphere",
       [&](int threads) { return vvm_test::frame_field_hash(field(threads, input).field); },
       [&] { field(2, other_input); });
 }
