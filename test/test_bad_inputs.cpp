@@ -7,7 +7,8 @@
 // and non-finite frame fields, negative time limits. Each must throw std::invalid_argument
 // whose message names the argument (checked words), and leave the caller's mesh as it was
 // (a hash of it before and after). Each named test prints its rows of the table
-// (entry point | bad input | outcome).
+// (entry point | bad input | outcome). The test `stopping` drives each entry point with a time
+// limit that is up at once and with a visitor that asks to stop: a valid result that says so.
 
 // first: Mesh_3 includes TBB headers the others rely on
 #include <CGAL/make_mesh_3.h>
@@ -24,7 +25,9 @@
 #include <CGAL/Frame_fields/generate_cross_field_3.h>
 #include <CGAL/GSM_mesh_optimization/Complex_from_tetrahedra_3.h>
 #include <CGAL/GSM_mesh_optimization/IO/read_closed_surface.h>
+#include <CGAL/GSM_mesh_optimization/mesh_quality_statistics.h>
 #include <CGAL/Hex_dominant_meshing/IO/read_volume_mesh.h>
+#include <CGAL/Hex_dominant_meshing/hex_dominant_statistics.h>
 #include <CGAL/Labeled_mesh_domain_3.h>
 #include <CGAL/Mesh_complex_3_in_triangulation_3.h>
 #include <CGAL/Mesh_criteria_3.h>
@@ -238,6 +241,8 @@ void test_gsm()
      with(GSM::parameters::sizing_field([](const Eigen::Vector3d&) { return nan; })));
   on("metric_field not positive definite", {"metric"}, good,
      with(GSM::parameters::metric_field([](const Eigen::Vector3d&) { return Eigen::Matrix3d(Eigen::Vector3d(1, -1, 1).asDiagonal()); })));
+  on("metric_field singular", {"metric"}, good,
+     with(GSM::parameters::metric_field([](const Eigen::Vector3d&) { return singular; })));
   on("metric_field NaN", {"metric"}, good,
      with(GSM::parameters::metric_field([](const Eigen::Vector3d&) { return not_finite; })));
 
@@ -436,6 +441,11 @@ void test_files()
   refused(surfaces, "open surface", {"open"}, read_surface(write_file("open.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n")));
   refused(surfaces, "NaN coordinate", {"nan.off"},
           read_surface(write_file("nan.off", "OFF\n4 4 0\nnan 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n")));
+  refused(surfaces, "PLY face of 4294967295 vertices", {"huge.ply", "4294967295"},
+          read_surface(write_file("huge.ply", "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\n"
+                                              "property float y\nproperty float z\nelement face 4\n"
+                                              "property list uint int vertex_indices\nend_header\n0 0 0\n1 0 0\n"
+                                              "0 1 0\n0 0 1\n4294967295 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n")));
   refused(surfaces, "flat closed surface", {"flat.off"},
           read_surface(write_file("flat.off", "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n")));
 
@@ -482,6 +492,117 @@ void test_files()
                                              "0 0 1 0\nTetrahedra\n1\n1 2 3 9 1\nEnd\n")));
 }
 
+// ---------------------------------------------------------------------------------------------
+// Stopping: every entry point under a time limit that is up at once, and with a visitor that
+// asks to stop at its first call, gives a valid result and says why it stopped
+
+bool valid_complex(const C3T3& c3t3)
+{
+  const auto q = CGAL::GSM_mesh_optimization::mesh_quality_statistics(c3t3);
+  // combinatorial validity: GSM's flips leave a triangulation that is not regular on purpose
+  return c3t3.triangulation().tds().is_valid() && c3t3.number_of_cells_in_complex() > 0 &&
+         q.number_of_inverted_cells == 0;
+}
+
+bool all_tetrahedra(const CGAL::Hex_dominant_mesh_3<Point>& mesh, std::size_t number_of_tets)
+{
+  const HDM::Hex_dominant_statistics s = HDM::hex_dominant_statistics(mesh);
+  return s.number_of_tetrahedra == number_of_tets && mesh.cells.size() == number_of_tets && s.number_of_inverted_cells == 0;
+}
+
+void test_stopping()
+{
+  const Domain domain = sphere_domain();
+  const Constant_field identity;
+  const double now = 1e-9; // seconds: up before the first check
+  const auto few = TLM::parameters::number_of_particles(std::size_t(600));
+  int calls = 0;
+  auto stop_at_once = [&calls](const auto&...) {
+    ++calls;
+    return false;
+  };
+
+  { // GSM
+    C3T3 timed = sphere_mesh(), visited = sphere_mesh();
+    VVM_CHECK(CGAL::gsm_optimize_mesh_3(timed, domain, params::maximum_running_time(now)) == CGAL::TIME_LIMIT_REACHED);
+    VVM_CHECK(valid_complex(timed));
+    calls = 0;
+    VVM_CHECK(CGAL::gsm_optimize_mesh_3(visited, domain, params::visitor(stop_at_once)) ==
+              CGAL::MAX_ITERATION_NUMBER_REACHED);
+    VVM_CHECK_EQUAL(calls, 1);
+    VVM_CHECK(valid_complex(visited));
+    // 0 is no limit, as in CGAL's optimizers
+    documented("gsm_optimize_mesh_3", "maximum_running_time 0", "no time limit (CGAL's convention)", [&] {
+      C3T3 c3t3 = sphere_mesh();
+      return CGAL::gsm_optimize_mesh_3(c3t3, domain, params::maximum_running_time(0.));
+    }, [](CGAL::Mesh_optimization_return_code code) { return code != CGAL::TIME_LIMIT_REACHED; });
+  }
+  { // particles
+    const auto timed = CGAL::lattice_particles_3(domain, identity, few.maximum_running_time(now));
+    VVM_CHECK(timed.time_limit_reached && !timed.stopped_by_visitor && timed.size() > 0);
+    calls = 0;
+    const auto visited = CGAL::lattice_particles_3(domain, identity, few.visitor(stop_at_once));
+    VVM_CHECK(visited.stopped_by_visitor && !visited.time_limit_reached && visited.size() > 0);
+    VVM_CHECK_EQUAL(calls, 1);
+  }
+  { // lattice meshes, with the generated field too (its smoothing is a stage)
+    TLM::Lattice_mesh_report r;
+    const C3T3 timed = CGAL::make_lattice_mesh_3<C3T3>(domain, identity,
+        TLM::parameters::mesh_report(&r, few.maximum_running_time(now)));
+    VVM_CHECK(r.time_limit_reached && !r.stopped_by_visitor && r.gsm_time == 0);
+    VVM_CHECK(valid_complex(timed));
+    const C3T3 timed_field = CGAL::make_lattice_mesh_3<C3T3>(domain,
+        TLM::parameters::mesh_report(&r, few.maximum_running_time(now)));
+    VVM_CHECK(r.time_limit_reached && r.gsm_time == 0);
+    VVM_CHECK(valid_complex(timed_field));
+    calls = 0;
+    const C3T3 visited = CGAL::make_lattice_mesh_3<C3T3>(domain, identity,
+        TLM::parameters::mesh_report(&r, few.visitor(stop_at_once)));
+    VVM_CHECK(r.stopped_by_visitor && !r.time_limit_reached && r.gsm_time == 0);
+    VVM_CHECK_EQUAL(calls, 1);
+    VVM_CHECK(valid_complex(visited));
+  }
+  { // hex-dominant meshes: the tets stay tetrahedra
+    HDM::Hex_dominant_report r;
+    const auto timed = CGAL::make_hex_dominant_mesh_3<C3T3>(domain, identity,
+        HDM::parameters::hex_dominant_report(&r, few.maximum_running_time(now)));
+    VVM_CHECK(r.time_limit_reached && !r.stopped_by_visitor && r.merge.stopped);
+    VVM_CHECK(all_tetrahedra(timed, r.merge.number_of_tets));
+    calls = 0;
+    C3T3 tets;
+    const auto visited = CGAL::make_hex_dominant_mesh_3<C3T3>(domain, identity,
+        HDM::parameters::hex_dominant_report(&r, HDM::parameters::stage_visitor(stop_at_once,
+            HDM::parameters::tetrahedral_mesh(&tets, few))));
+    VVM_CHECK(r.stopped_by_visitor && !r.time_limit_reached && r.merge.stopped);
+    VVM_CHECK_EQUAL(calls, 3); // told of each stage
+    VVM_CHECK(all_tetrahedra(visited, r.merge.number_of_tets));
+
+    // tets_to_hex_dominant on the same tets: hexahedra without a limit, none with one up at once
+    HDM::Hex_dominant_merge_report m;
+    const auto merged = CGAL::tets_to_hex_dominant(tets, HDM::parameters::merge_report(&m));
+    VVM_CHECK(!m.stopped && HDM::hex_dominant_statistics(merged).number_of_hexahedra > 0);
+    const auto cut = CGAL::tets_to_hex_dominant(tets, HDM::parameters::merge_report(&m, params::maximum_running_time(now)));
+    VVM_CHECK(m.stopped);
+    VVM_CHECK(all_tetrahedra(cut, m.number_of_tets));
+    refused("tets_to_hex_dominant", "maximum_running_time -1", {"maximum_running_time"},
+            [&] { CGAL::tets_to_hex_dominant(tets, params::maximum_running_time(-1.)); });
+  }
+  { // cross fields: the field of the least-squares solve, or of the rounds run
+    const C3T3& c3t3 = sphere_mesh();
+    const auto timed = CGAL::Frame_fields::generate_cross_field_3(c3t3, params::maximum_running_time(now));
+    VVM_CHECK(timed.time_limit_reached && !timed.stopped_by_visitor);
+    VVM_CHECK_EQUAL(timed.round_energies.size(), std::size_t(1));
+    VVM_CHECK(timed.field.frames().size() == timed.field.points().size() && !timed.field.points().empty());
+    calls = 0;
+    const auto visited = CGAL::Frame_fields::generate_cross_field_3(c3t3, params::visitor(stop_at_once));
+    VVM_CHECK(visited.stopped_by_visitor && !visited.time_limit_reached);
+    VVM_CHECK_EQUAL(visited.round_energies.size(), std::size_t(2));
+    VVM_CHECK_EQUAL(calls, 1);
+    refused("generate_cross_field_3", "maximum_running_time -1", {"maximum_running_time"},
+            [&] { CGAL::Frame_fields::generate_cross_field_3(c3t3, params::maximum_running_time(-1.)); });
+  }
+}
+
 } // namespace
 
 int main(int argc, char** argv)
@@ -493,5 +614,6 @@ int main(int argc, char** argv)
       {"lattice", test_lattice},
       {"hex_dominant", test_hex_dominant},
       {"frame_fields", test_frame_fields},
-      {"files", test_files}});
+      {"files", test_files},
+      {"stopping", test_stopping}});
 }

@@ -180,6 +180,13 @@ class TestLatticeAndHexDominant:
         assert vvm.quality(back)["hexahedra"] == q["hexahedra"]
         assert abs(vvm.quality(back)["hex_volume_percent"] - q["hex_volume_percent"]) < 1e-9
 
+    def test_time_limit(self):
+        """a time limit up at once: a valid mesh whose tets stay tetrahedra, and the report says so"""
+        mesh = vvm.hex_dominant(data("cube.off"), particles=1000, time_limit=1e-9)
+        q = vvm.quality(mesh)
+        assert mesh.info["time_limit_reached"] and q["hexahedra"] == 0 and q["tetrahedra"] > 0 and q["inverted"] == 0, q
+        assert not vvm.hex_dominant(data("cube.off"), particles=1000).info["time_limit_reached"]
+
     def test_prisms_in_meshio_order(self):
         """prisms and pyramids cross in meshio's vertex order both ways: none comes out inverted"""
         mesh = vvm.hex_dominant(data("sphere966.off"), particles=400)
@@ -272,6 +279,8 @@ class TestErrors:
             vvm.tet_mesh(surface, vertices=2.5)
         with pytest.raises(ValueError, match="q-bound"):
             vvm.hex_dominant(surface, particles=500, q_bound=2)
+        with pytest.raises(ValueError, match="time_limit"):
+            vvm.hex_dominant(surface, particles=500, time_limit=-1)
         with pytest.raises(ValueError, match="progress"):
             vvm.tet_mesh(surface, vertices=500, progress=3)
         with pytest.raises(ValueError, match="frame-field"):

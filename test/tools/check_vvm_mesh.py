@@ -214,6 +214,14 @@ def check_hexdom():
                                                if t in ("tetra", "hexahedron", "wedge", "pyramid")})
     mesh = meshio.read(work("cube.vtu"))
     require(len(mesh.cells_dict.get("hexahedron", [])) == r["n_hex"], "cube.vtu: hexahedra")
+    require(r["time_limit_reached"] is False, f"report {r}")
+    # a time limit up at once: a valid mesh of the particles' tets, none merged, and said so
+    out, _ = run(["hexdom", data("cube.off"), "-o", work("cut.mesh"), "--particles", "1000", "--time-limit", "1e-9",
+                  "--json", work("cut.json"), "--quiet"])
+    r = report(work("cut.json"))
+    require(r["time_limit_reached"] is True and r["n_hex"] == 0 and r["n_inverted"] == 0 and r["n_tets"] > 0,
+            f"report {r}")
+    require("stopped at the time limit" in out, f"summary:\n{out}")
 
 
 def check_field():
@@ -368,6 +376,7 @@ def check_bad_inputs():
         (["optimize", data("cube.off"), "-o", out], "extension"),
         (["optimize", work("inverted.mesh"), "-o", out, "--json", out], "overwrite"),
         (["tet", data("cube.off"), "-o", out, "--seed", "-3"], "seed"),
+        (["tet", data("cube.off"), "-o", out, "--time-limit", "-1"], "time-limit"),
         (["quality", work("missing.mesh")], "cannot open"),
         (["frobnicate"], "unknown command"),
     ]

@@ -57,7 +57,7 @@ Volume_mesh image_tet_mesh(const std::string& input, const Tet_options& o, const
   }
   CGAL::Real_timer timer;
   timer.start();
-  run_optimizer_chain(c3t3, domain, o, progress);
+  r.time_limit_reached = run_optimizer_chain(c3t3, domain, o, progress);
   r.optimize_time = timer.time();
   return to_volume_mesh(c3t3);
 }

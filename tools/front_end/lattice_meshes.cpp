@@ -52,12 +52,13 @@ Volume_mesh lattice_tet_mesh(const Surface_source& input, const Tet_options& o, 
   const auto threads = thread_limit(o.threads);
   Surface_input in(input, o.features_angle);
   const Stage stage(progress, "lattice " + o.method);
+  TLM::Lattice_mesh_report report;
   auto np = TLM::parameters::lattice(o.method == "bcc" ? TLM::Lattice_type::BCC : TLM::Lattice_type::FCC,
-                                     TLM::parameters::number_of_threads(o.threads,
-                                         CGAL::parameters::random_seed(o.seed).visitor(
+                                     TLM::parameters::mesh_report(&report, TLM::parameters::number_of_threads(o.threads,
+                                         CGAL::parameters::random_seed(o.seed).maximum_running_time(o.time_limit).visitor(
                                              [&stage](const TLM::Lattice_round_report& rr) {
                                                stage.report(particle_round_text(rr));
-                                             })));
+                                             }))));
   Surface_c3t3 c3t3 = with_field(o.field, [&](const auto* field) {
     try {
       if(o.size.size > 0) {
@@ -73,6 +74,7 @@ Volume_mesh lattice_tet_mesh(const Surface_source& input, const Tet_options& o, 
     }
   });
   r.optimize_time = stage.time();
+  r.time_limit_reached = report.time_limit_reached;
   return to_volume_mesh(c3t3);
 }
 
@@ -93,7 +95,8 @@ Volume_mesh hex_dominant_mesh(const Surface_source& input, const Hex_dominant_op
   const auto threads = internal::thread_limit(o.threads);
   internal::Surface_input in(input, o.features_angle);
   const internal::Stage stage(progress, "hexdom");
-  auto np = internal::HDM::parameters::quality_bound(
+  CGAL::Hex_dominant_meshing::Hex_dominant_report hex_report;
+  auto np = internal::HDM::parameters::hex_dominant_report(&hex_report, internal::HDM::parameters::quality_bound(
       o.quality_bound,
       internal::HDM::parameters::boundary_distance(
           o.boundary_distance,
@@ -105,10 +108,10 @@ Volume_mesh hex_dominant_mesh(const Surface_source& input, const Hex_dominant_op
                 stage.report(std::string(name) + " done in " + std::to_string(seconds) + " s");
               },
               internal::TLM::parameters::number_of_threads(
-                  o.threads, CGAL::parameters::random_seed(o.seed).visitor(
+                  o.threads, CGAL::parameters::random_seed(o.seed).maximum_running_time(o.time_limit).visitor(
                                  [&stage](const internal::TLM::Lattice_round_report& rr) {
                                    stage.report(internal::particle_round_text(rr));
-                                 })))));
+                                 }))))));
   Volume_mesh mesh = internal::with_field(o.field, [&](const auto* field) {
     try {
       if(o.size.size > 0) {
@@ -124,6 +127,7 @@ Volume_mesh hex_dominant_mesh(const Surface_source& input, const Hex_dominant_op
     }
   });
   r.optimize_time = stage.time();
+  r.time_limit_reached = hex_report.time_limit_reached;
   return mesh;
 }
 
@@ -145,8 +149,10 @@ std::string cross_field(const Surface_source& input, const Field_options& o, con
   const internal::Stage stage(progress, "cross field");
   stage.report("generate_cross_field_3 on " + std::to_string(c3t3.number_of_cells_in_complex()) + " cells");
   std::ostringstream os;
-  CGAL::Frame_fields::IO::write_frame_field(os, CGAL::Frame_fields::generate_cross_field_3(c3t3).field);
+  const auto generated = CGAL::Frame_fields::generate_cross_field_3(c3t3, CGAL::parameters::maximum_running_time(o.time_limit));
+  CGAL::Frame_fields::IO::write_frame_field(os, generated.field);
   r.optimize_time = stage.time();
+  r.time_limit_reached = generated.time_limit_reached;
   return os.str();
 }
 

@@ -132,6 +132,7 @@ std::string json_line(const Run_report& r, const Mesh_quality& quality)
   for(std::size_t i = 0; i < q.labels.size(); ++i) os << (i ? ", " : "") << q.labels[i];
   os << "], \"mesh_time_s\": " << r.mesh_time << ", \"opt_time_s\": " << r.optimize_time;
   if(r.run_time > 0) os << ", \"run_time_s\": " << r.run_time;
+  os << ", \"time_limit_reached\": " << (r.time_limit_reached ? "true" : "false");
   if(r.input_vertices > 0) os << ", \"input_vertices\": " << r.input_vertices;
   if(r.boundary_distance_bound >= 0) os << ", \"boundary_distance_bound\": " << Json_number{r.boundary_distance_bound};
   if(r.boundary_hausdorff >= 0) os << ", \"boundary_hausdorff\": " << Json_number{r.boundary_hausdorff};

@@ -102,8 +102,8 @@ Volume_mesh optimize_tet_mesh(const Volume_mesh& mesh, const Optimize_options& o
   CGAL::Real_timer timer;
   timer.start();
   try {
-    internal::run_gsm(complex->c3t3(), complex->domain(), o.threads, o.seed, progress, {}, r.boundary_distance_bound,
-                      o.fixed_boundary);
+    r.time_limit_reached = internal::run_gsm(complex->c3t3(), complex->domain(), o.threads, o.seed, o.time_limit,
+                                             progress, {}, r.boundary_distance_bound, o.fixed_boundary);
   } catch(const std::invalid_argument& e) {
     throw Input_error(e.what());
   }

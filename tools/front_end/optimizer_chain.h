@@ -31,24 +31,23 @@ inline std::string gsm_round_text(const CGAL::GSM_mesh_optimization::Round_repor
   return text;
 }
 
-/// GSM with the run's threads, seed and progress; `metric` (may be empty) is the target metric,
-/// `boundary_distance` the least bound of its boundary-fidelity guard; `freeze_boundary`: only
-/// interior vertices move
+/// GSM with the run's threads, seed, time limit (0: none) and progress; `metric` (may be empty)
+/// is the target metric, `boundary_distance` the least bound of its boundary-fidelity guard;
+/// `freeze_boundary`: only interior vertices move. Returns whether the time limit stopped it.
 template <class C3T3, class MeshDomain>
-void run_gsm(C3T3& c3t3, const MeshDomain& domain, int threads, unsigned int seed, const Progress& progress,
-             const std::function<Eigen::Matrix3d(const Eigen::Vector3d&)>& metric = {}, double boundary_distance = 0,
-             bool freeze_boundary = false)
+bool run_gsm(C3T3& c3t3, const MeshDomain& domain, int threads, unsigned int seed, double time_limit,
+             const Progress& progress, const std::function<Eigen::Matrix3d(const Eigen::Vector3d&)>& metric = {},
+             double boundary_distance = 0, bool freeze_boundary = false)
 {
   namespace GSM = CGAL::GSM_mesh_optimization;
   const Stage stage(progress, "gsm");
   CGAL::get_default_random() = CGAL::Random(seed);
   auto np = GSM::parameters::freeze_boundary(freeze_boundary, GSM::parameters::boundary_distance(
-      boundary_distance, GSM::parameters::number_of_threads(threads, CGAL::parameters::visitor(
+      boundary_distance, GSM::parameters::number_of_threads(threads, CGAL::parameters::maximum_running_time(time_limit).visitor(
           [&stage](const GSM::Round_report& r) { stage.report(gsm_round_text(r)); }))));
-  if(metric)
-    CGAL::gsm_optimize_mesh_3(c3t3, domain, GSM::parameters::metric_field(metric, np));
-  else
-    CGAL::gsm_optimize_mesh_3(c3t3, domain, np);
+  const auto code = metric ? CGAL::gsm_optimize_mesh_3(c3t3, domain, GSM::parameters::metric_field(metric, np))
+                           : CGAL::gsm_optimize_mesh_3(c3t3, domain, np);
+  return code == CGAL::TIME_LIMIT_REACHED;
 }
 
 inline bool is_optimizer_chain(const std::string& method)
@@ -56,28 +55,33 @@ inline bool is_optimizer_chain(const std::string& method)
   return method == "gsm" || method == "odt+gsm" || method == "perturb+exude";
 }
 
-/// the optimizers of `method` on a make_mesh_3 mesh
+/// the optimizers of `method` on a make_mesh_3 mesh, sharing `o.time_limit` (CGAL's optimizers
+/// through their `time_limit`); returns whether the time limit stopped one
 template <class C3T3, class MeshDomain>
-void run_optimizer_chain(C3T3& c3t3, const MeshDomain& domain, const Tet_options& o, const Progress& progress,
+bool run_optimizer_chain(C3T3& c3t3, const MeshDomain& domain, const Tet_options& o, const Progress& progress,
                          const std::function<Eigen::Matrix3d(const Eigen::Vector3d&)>& metric = {})
 {
   namespace P = CGAL::parameters;
+  const CGAL::GSM_mesh_optimization::internal::Time_limit limit(o.time_limit);
+  bool reached = false;
   if(o.method == "odt+gsm") {
     const Stage stage(progress, "odt");
     stage.report("CGAL::odt_optimize_mesh_3");
     CGAL::get_default_random() = CGAL::Random(o.seed);
-    CGAL::odt_optimize_mesh_3(c3t3, domain);
+    reached = CGAL::odt_optimize_mesh_3(c3t3, domain, P::time_limit = limit.remaining()) == CGAL::TIME_LIMIT_REACHED;
+    if(reached) return true;
   }
   if(o.method == "perturb+exude") {
     const Stage stage(progress, "perturb+exude");
     stage.report("CGAL::perturb_mesh_3");
     CGAL::get_default_random() = CGAL::Random(o.seed);
-    CGAL::perturb_mesh_3(c3t3, domain, P::sliver_bound = 0);
+    reached = CGAL::perturb_mesh_3(c3t3, domain, P::sliver_bound = 0, P::time_limit = limit.remaining()) ==
+              CGAL::TIME_LIMIT_REACHED;
+    if(reached) return true;
     stage.report("CGAL::exude_mesh_3");
-    CGAL::exude_mesh_3(c3t3, P::sliver_bound = 0);
-    return;
+    return CGAL::exude_mesh_3(c3t3, P::sliver_bound = 0, P::time_limit = limit.remaining()) == CGAL::TIME_LIMIT_REACHED;
   }
-  run_gsm(c3t3, domain, o.threads, o.seed, progress, metric);
+  return run_gsm(c3t3, domain, o.threads, o.seed, limit.remaining(), progress, metric);
 }
 
 // the units of the front end that instantiate other domains

@@ -64,7 +64,7 @@ Volume_mesh tet_mesh(const Surface_source& input, const Tet_options& o, const Pr
   }
   CGAL::Real_timer timer;
   timer.start();
-  internal::run_optimizer_chain(c3t3, *in.domain, o, progress, metric);
+  r.time_limit_reached = internal::run_optimizer_chain(c3t3, *in.domain, o, progress, metric);
   r.optimize_time = timer.time();
   return internal::to_volume_mesh(c3t3);
 }

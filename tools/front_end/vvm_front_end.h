@@ -78,6 +78,7 @@ struct Tet_options
   std::string field = "cross"; ///< cross, identity, or a frame-field file (lattices; a file is GSM's metric too)
   int threads = 0;             ///< 0: all cores
   unsigned int seed = 0;
+  double time_limit = 0;       ///< seconds of the optimizer or the lattice (`maximum_running_time`); 0: none
 };
 
 /// `vvm-mesh hexdom`
@@ -90,6 +91,7 @@ struct Hex_dominant_options
   std::string field = "cross";
   int threads = 0;
   unsigned int seed = 0;
+  double time_limit = 0;       ///< seconds of make_hex_dominant_mesh_3 (field included); 0: none
 };
 
 /// `vvm-mesh optimize`
@@ -102,6 +104,7 @@ struct Optimize_options
   double boundary_distance = -1;
   int threads = 0;
   unsigned int seed = 0;
+  double time_limit = 0;       ///< seconds of GSM; 0: none
 };
 
 /// `vvm-mesh field`
@@ -110,6 +113,7 @@ struct Field_options
   Mesh_size size;              ///< of the tetrahedral mesh that carries the field
   double features_angle = 60;
   unsigned int seed = 0;
+  double time_limit = 0;       ///< seconds of generate_cross_field_3; 0: none
 };
 
 /// what a run made, for the summary and the JSON line
@@ -123,6 +127,7 @@ struct Run_report
   std::size_t input_vertices = 0; ///< optimize: the input's
   double boundary_distance_bound = -1; ///< optimize: the bound the boundary was held to
   double boundary_hausdorff = -1;      ///< optimize: two-sided distance between the input's and the output's boundaries
+  bool time_limit_reached = false;     ///< the time limit stopped the optimizer, lattice, merging or field
 };
 
 /// the quality table of a volume mesh

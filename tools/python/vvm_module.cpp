@@ -212,6 +212,7 @@ py::dict report_dict(const vvm::Run_report& r)
   if(r.input_vertices > 0) d["input_vertices"] = r.input_vertices;
   if(r.boundary_distance_bound >= 0) d["boundary_distance_bound"] = r.boundary_distance_bound;
   if(r.boundary_hausdorff >= 0) d["boundary_hausdorff"] = r.boundary_hausdorff;
+  d["time_limit_reached"] = r.time_limit_reached;
   return d;
 }
 
@@ -232,10 +233,11 @@ py::dict result(const vvm::Volume_mesh& mesh, const vvm::Run_report& report)
 
 py::dict tet_mesh(const py::object& surface, const std::string& method, std::size_t vertices, double size,
                   double features_angle, const std::string& field, int threads, unsigned int seed,
-                  const py::object& progress)
+                  double time_limit, const py::object& progress)
 {
   const vvm::Surface_source source = surface_source(surface);
   vvm::Tet_options o;
+  o.time_limit = time_limit;
   o.method = method;
   o.size = mesh_size(size, vertices);
   o.features_angle = features_angle;
@@ -250,10 +252,11 @@ py::dict tet_mesh(const py::object& surface, const std::string& method, std::siz
 
 py::dict hex_dominant(const py::object& surface, std::size_t particles, double size, double q_bound,
                       double boundary_distance, double features_angle, const std::string& field, int threads,
-                      unsigned int seed, const py::object& progress)
+                      unsigned int seed, double time_limit, const py::object& progress)
 {
   const vvm::Surface_source source = surface_source(surface);
   vvm::Hex_dominant_options o;
+  o.time_limit = time_limit;
   o.size = mesh_size(size, particles);
   o.quality_bound = q_bound;
   o.boundary_distance = boundary_distance;
@@ -269,10 +272,11 @@ py::dict hex_dominant(const py::object& surface, std::size_t particles, double s
 
 py::dict optimize(const Double_array& points, const Index_array& cell_types, const Index_array& connectivity,
                   const Index_array& labels, double features_angle, bool fixed_boundary, double boundary_distance,
-                  int threads, unsigned int seed, const py::object& progress)
+                  int threads, unsigned int seed, double time_limit, const py::object& progress)
 {
   const vvm::Volume_mesh input = mesh_from_arrays(points, cell_types, connectivity, labels);
   vvm::Optimize_options o;
+  o.time_limit = time_limit;
   o.features_angle = features_angle;
   o.fixed_boundary = fixed_boundary;
   o.boundary_distance = boundary_distance;
@@ -308,10 +312,11 @@ py::dict frame_field_dict(const vvm::Frame_field_arrays& a)
 }
 
 py::dict cross_field(const py::object& surface, std::size_t vertices, double size, double features_angle,
-                     unsigned int seed, const py::object& progress)
+                     unsigned int seed, double time_limit, const py::object& progress)
 {
   const vvm::Surface_source source = surface_source(surface);
   vvm::Field_options o;
+  o.time_limit = time_limit;
   o.size = mesh_size(size, vertices);
   o.features_angle = features_angle;
   o.seed = seed;
@@ -422,14 +427,15 @@ PYBIND11_MODULE(_vvm, m)
   m.attr("__version__") = VVM_VERSION;
   using py::arg;
   m.def("tet_mesh", &tet_mesh, arg("surface"), arg("method"), arg("vertices"), arg("size"), arg("features_angle"),
-        arg("field"), arg("threads"), arg("seed"), arg("progress"));
+        arg("field"), arg("threads"), arg("seed"), arg("time_limit"), arg("progress"));
   m.def("hex_dominant", &hex_dominant, arg("surface"), arg("particles"), arg("size"), arg("q_bound"),
-        arg("boundary_distance"), arg("features_angle"), arg("field"), arg("threads"), arg("seed"), arg("progress"));
+        arg("boundary_distance"), arg("features_angle"), arg("field"), arg("threads"), arg("seed"), arg("time_limit"),
+        arg("progress"));
   m.def("optimize", &optimize, arg("points"), arg("cell_types"), arg("connectivity"), arg("labels"),
         arg("features_angle"), arg("fixed_boundary"), arg("boundary_distance"), arg("threads"), arg("seed"),
-        arg("progress"));
+        arg("time_limit"), arg("progress"));
   m.def("cross_field", &cross_field, arg("surface"), arg("vertices"), arg("size"), arg("features_angle"), arg("seed"),
-        arg("progress"));
+        arg("time_limit"), arg("progress"));
   m.def("frame_field_text", &frame_field_text, arg("points"), arg("tetrahedra"), arg("frames"), arg("location"));
   m.def(
       "frame_field_from_text",

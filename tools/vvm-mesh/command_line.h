@@ -39,7 +39,7 @@ inline const char* main_usage =
 inline const char* tet_usage =
     "usage: vvm-mesh tet INPUT -o OUT [--method gsm|odt+gsm|perturb+exude|bcc|fcc]\n"
     "                    [--size H | --vertices N] [--features-angle DEG] [--field cross|identity|FILE]\n"
-    "                    [--threads N] [--seed N] [--json FILE] [--quiet]\n"
+    "                    [--threads N] [--seed N] [--time-limit S] [--json FILE] [--quiet]\n"
     "  INPUT               a closed triangle surface (OFF, OBJ, PLY, STL, ...), or a labelled 3D image\n"
     "                      (.inr, .inr.gz: each non-zero label a subdomain)\n"
     "  -o OUT              the mesh: .mesh, .msh or .vtu\n"
@@ -54,6 +54,8 @@ inline const char* tet_usage =
     "                      file (vvm-mesh field): the lattice's field, GSM's target metric B^T B\n"
     "  --threads N         at most N threads (default: all cores)\n"
     "  --seed N            random seed (default 0): the same seed gives the same mesh\n"
+    "  --time-limit S      stop the optimizer (or the lattice) after S seconds, with a valid mesh\n"
+    "                      (default 0: none; make_mesh_3 is not counted)\n"
     "  --json FILE         the summary figures as one JSON line\n"
     "  --quiet             no progress on stderr\n"
     "example: vvm-mesh tet data/fandisk.off -o fandisk.msh\n";
@@ -61,7 +63,7 @@ inline const char* tet_usage =
 inline const char* hexdom_usage =
     "usage: vvm-mesh hexdom INPUT -o OUT [--particles N | --size H] [--q-bound Q] [--boundary-distance D]\n"
     "                       [--features-angle DEG] [--field cross|identity|FILE] [--threads N] [--seed N]\n"
-    "                       [--json FILE] [--quiet]\n"
+    "                       [--time-limit S] [--json FILE] [--quiet]\n"
     "  INPUT               a closed triangle surface (OFF, OBJ, PLY, STL, ...)\n"
     "  -o OUT              the mesh: .mesh, .msh or .vtu (hexahedra, prisms, pyramids, tetrahedra)\n"
     "  --particles N       the number of cubic-lattice particles sought (default 30000)\n"
@@ -72,11 +74,13 @@ inline const char* hexdom_usage =
     "                      refinement)\n"
     "  --features-angle D  sharp edges of the surface (default 60; 0: none)\n"
     "  --field F           cross (default), identity, or a frame-field file\n"
+    "  --time-limit S      stop after S seconds (field, particles, merging), with a valid mesh whose\n"
+    "                      unmerged tets stay tetrahedra (default 0: none)\n"
     "  --threads N, --seed N, --json FILE, --quiet  as for tet\n";
 
 inline const char* optimize_usage =
     "usage: vvm-mesh optimize MESH -o OUT [--features-angle DEG] [--boundary-distance D] [--fixed-boundary]\n"
-    "                         [--threads N] [--seed N] [--json FILE] [--quiet]\n"
+    "                         [--threads N] [--seed N] [--time-limit S] [--json FILE] [--quiet]\n"
     "  MESH                a tetrahedral mesh (.mesh, .msh, .vtu) made by any mesher, with its subdomain\n"
     "                      labels (MEDIT references, Gmsh physical groups, a VTU cell array)\n"
     "  -o OUT              the optimized mesh, labels kept; without an extension, MESH's is used\n"
@@ -86,7 +90,7 @@ inline const char* optimize_usage =
     "  --boundary-distance D  how far the boundary facets may stray from MESH's boundary (default 1% of\n"
     "                      its mean edge length; 0: boundary vertices slide on its flat parts only)\n"
     "  --fixed-boundary    move interior vertices only\n"
-    "  --threads N, --seed N, --json FILE, --quiet  as for tet\n"
+    "  --threads N, --seed N, --time-limit S, --json FILE, --quiet  as for tet\n"
     "Refused (exit 2): inverted or flat tetrahedra, a facet of three tetrahedra, a boundary that is not\n"
     "a manifold, non-finite coordinates, cells other than tetrahedra.\n";
 
@@ -99,11 +103,12 @@ inline const char* quality_usage =
 
 inline const char* field_usage =
     "usage: vvm-mesh field INPUT -o FIELD [--size H | --vertices N] [--features-angle DEG] [--seed N]\n"
-    "                      [--quiet]\n"
+    "                      [--time-limit S] [--quiet]\n"
     "  INPUT               a closed triangle surface (OFF, OBJ, PLY, STL, ...)\n"
     "  -o FIELD            the cross field, one frame per vertex of a tet mesh of INPUT, in the text\n"
     "                      format --field reads\n"
-    "  --size H, --vertices N  the size of that tet mesh (default 10000 vertices)\n";
+    "  --size H, --vertices N  the size of that tet mesh (default 10000 vertices)\n"
+    "  --time-limit S      stop the field's smoothing after S seconds (default 0: none)\n";
 
 /// a command line of vvm-mesh, parsed
 struct Arguments
@@ -140,6 +145,14 @@ inline unsigned int seed(const Arguments& a)
   return static_cast<unsigned int>(s);
 }
 
+/// --time-limit: seconds, non-negative and finite (0: none)
+inline double time_limit(const Arguments& a)
+{
+  const double s = number<double>(a, "--time-limit", 0.);
+  if(!(s >= 0 && s < 1e12)) throw Input_error("--time-limit must be a non-negative number of seconds");
+  return s;
+}
+
 inline std::string text(const Arguments& a, const std::string& option, const std::string& fallback)
 {
   const auto it = a.values.find(option);
@@ -167,12 +180,12 @@ inline Arguments parse(int argc, const char* const* argv)
     return a;
   }
   static const std::map<std::string, std::vector<std::string>> options{
-      {"tet", {"--method", "--size", "--vertices", "--features-angle", "--field", "--threads", "--seed"}},
+      {"tet", {"--method", "--size", "--vertices", "--features-angle", "--field", "--threads", "--seed", "--time-limit"}},
       {"hexdom", {"--particles", "--size", "--q-bound", "--boundary-distance", "--features-angle", "--field",
-                  "--threads", "--seed"}},
-      {"optimize", {"--features-angle", "--boundary-distance", "--threads", "--seed"}},
+                  "--threads", "--seed", "--time-limit"}},
+      {"optimize", {"--features-angle", "--boundary-distance", "--threads", "--seed", "--time-limit"}},
       {"quality", {}},
-      {"field", {"--size", "--vertices", "--features-angle", "--seed"}}};
+      {"field", {"--size", "--vertices", "--features-angle", "--seed", "--time-limit"}}};
   const auto known = options.find(a.command);
   if(known == options.end()) throw Input_error("unknown command '" + a.command + "'");
   for(int i = 2; i < argc; ++i) {
@@ -221,6 +234,7 @@ inline vvm::Field_options field_options(const Arguments& a)
   o.size.vertices = count(a, "--vertices", o.size.vertices);
   o.features_angle = number<double>(a, "--features-angle", o.features_angle);
   o.seed = seed(a);
+  o.time_limit = time_limit(a);
   return o;
 }
 
@@ -235,6 +249,7 @@ inline vvm::Tet_options tet_options(const Arguments& a)
   o.field = text(a, "--field", o.field);
   o.threads = number<int>(a, "--threads", 0);
   o.seed = seed(a);
+  o.time_limit = time_limit(a);
   return o;
 }
 
@@ -250,6 +265,7 @@ inline vvm::Hex_dominant_options hex_dominant_options(const Arguments& a)
   o.field = text(a, "--field", o.field);
   o.threads = number<int>(a, "--threads", 0);
   o.seed = seed(a);
+  o.time_limit = time_limit(a);
   return o;
 }
 
@@ -264,6 +280,7 @@ inline vvm::Optimize_options optimize_options(const Arguments& a)
     throw Input_error("--boundary-distance must be non-negative");
   o.threads = number<int>(a, "--threads", 0);
   o.seed = seed(a);
+  o.time_limit = time_limit(a);
   return o;
 }
 

@@ -126,8 +126,9 @@ void print_summary(const vvm::Mesh_quality& q, const vvm::Run_report& r, bool fu
   std::printf("%-26s %zu\n", "inverted cells", q.inverted);
   if(r.boundary_hausdorff >= 0)
     std::printf("%-26s %.3g (bound %.3g)\n", "boundary moved by", r.boundary_hausdorff, r.boundary_distance_bound);
-  if(!full) std::printf("%-26s %.2f s (mesh %.2f s, %s %.2f s)\n", "time", r.mesh_time + r.optimize_time,
-                        r.mesh_time, r.method.c_str(), r.optimize_time);
+  if(!full) std::printf("%-26s %.2f s (mesh %.2f s, %s %.2f s)%s\n", "time", r.mesh_time + r.optimize_time,
+                        r.mesh_time, r.method.c_str(), r.optimize_time,
+                        r.time_limit_reached ? ", stopped at the time limit" : "");
   std::fflush(stdout);
 }
 
@@ -142,7 +143,8 @@ int run(const Arguments& a)
     const std::string field = vvm::cross_field(a.input, field_options(a), progress, &report);
     printer.finish();
     vvm::write_text_file(field, a.output);
-    std::printf("cross field written to %s (%.2f s)\n", a.output.c_str(), report.mesh_time + report.optimize_time);
+    std::printf("cross field written to %s (%.2f s%s)\n", a.output.c_str(), report.mesh_time + report.optimize_time,
+                report.time_limit_reached ? ", smoothing stopped at the time limit" : "");
     return 0;
   }
   if(a.command == "tet") {

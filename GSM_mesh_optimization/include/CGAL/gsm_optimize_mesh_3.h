@@ -153,9 +153,11 @@ gsm_optimize(C3T3& c3t3, const MeshDomain* domain, bool boundary_fixed, const Na
   refuse_unless(options.boundary_distance >= 0 && options.boundary_distance < HUGE_VAL,
                 "boundary_distance must be non-negative and finite");
 
+  // the time limit counts from here: the metric's fitting is part of the run
+  const GSM::internal::Time_limit time_limit(options.time_limit);
   auto visitor = get_parameter(np, CGAL::internal_np::visitor);
   if constexpr(!std::is_same<decltype(visitor), CGAL::internal_np::Param_not_found>::value)
-    options.visitor = [visitor](const GSM::Round_report& r) { visitor(r); };
+    options.visitor = [visitor](const GSM::Round_report& r) { return GSM::internal::visit(visitor, r); };
 
   auto sizing = get_parameter(np, GSM::internal_np::sizing_field);
   auto metric_field = get_parameter(np, GSM::internal_np::metric_field);
@@ -188,6 +190,7 @@ gsm_optimize(C3T3& c3t3, const MeshDomain* domain, bool boundary_fixed, const Na
   if(threads > 0)
     thread_limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
                                                          std::size_t(threads));
+  options.time_limit = time_limit.remaining();
   GSM::internal::GSM_optimizer<C3T3, MeshDomain> optimizer(c3t3, domain, metric, options, vertex_sizes);
   auto cost = get_parameter(np, GSM::internal_np::vertex_move_cost);
   if constexpr(!std::is_same<decltype(cost), CGAL::internal_np::Param_not_found>::value)
@@ -277,7 +280,8 @@ gsm_optimize(C3T3& c3t3, const MeshDomain* domain, bool boundary_fixed, const Na
  *     \cgalParamDefault{50}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{maximum_running_time}
- *     \cgalParamDescription{a time limit in seconds, checked during the rounds; 0 for none}
+ *     \cgalParamDescription{a time limit in seconds, from the call; the rounds and the polishing
+ *       stop once it is reached, the mesh valid (`TIME_LIMIT_REACHED`); 0 for none}
  *     \cgalParamType{double}
  *     \cgalParamDefault{0}
  *   \cgalParamNEnd
@@ -404,8 +408,10 @@ gsm_optimize(C3T3& c3t3, const MeshDomain* domain, bool boundary_fixed, const Na
  *     \cgalParamDescription{called after each round, and each polishing round, with its
  *       `GSM_mesh_optimization::Round_report` (mean energy, min dihedral angle, cells under the
  *       sliver bound, moves, flips,
- *       splits, time)}
- *     \cgalParamType{a callable `void(const GSM_mesh_optimization::Round_report&)`}
+ *       splits, time); if it returns `false`, the optimization stops there, as at the round
+ *       limit (`MAX_ITERATION_NUMBER_REACHED`)}
+ *     \cgalParamType{a callable `void(const GSM_mesh_optimization::Round_report&)` or
+ *       `bool(const GSM_mesh_optimization::Round_report&)`}
  *     \cgalParamDefault{none}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{verbose}

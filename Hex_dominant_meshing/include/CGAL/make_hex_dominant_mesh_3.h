@@ -51,6 +51,12 @@ struct Hex_dominant_report
   double tetrahedra_time = 0;        ///< seconds
   double merge_time = 0;             ///< seconds
   Hex_dominant_merge_report merge;   ///< what the merging did
+  /// `maximum_running_time` stopped a stage (the particles' rounds, the merging's candidate
+  /// search) or left no time for one (the boundary refinement, the flips): the mesh is valid
+  bool time_limit_reached = false;
+  /// a visitor returned `false`: the stages after it did only what a valid mesh needs
+  /// (the particles connected into tets, which stay tetrahedra)
+  bool stopped_by_visitor = false;
 };
 
 namespace internal {
@@ -66,19 +72,30 @@ make_hex_dominant_mesh(const MeshDomain& domain, const FrameField& field,
   using CGAL::parameters::get_parameter;
   HDM::Hex_dominant_report* report = choose_parameter(get_parameter(np, HDM::internal_np::hex_dominant_report),
                                                       static_cast<HDM::Hex_dominant_report*>(nullptr));
-  std::function<void(HDM::Hex_dominant_stage, double)> stage_visitor;
-  auto v = get_parameter(np, HDM::internal_np::stage_visitor);
-  if constexpr(!std::is_same<decltype(v), CGAL::internal_np::Param_not_found>::value)
-    stage_visitor = [v](HDM::Hex_dominant_stage s, double t) { v(s, t); };
   HDM::Hex_dominant_report local;
   HDM::Hex_dominant_report& r = report ? *report : local;
   r = HDM::Hex_dominant_report();
+  const GSM_mesh_optimization::internal::Time_limit time_limit(request.options.time_limit);
+  auto v = get_parameter(np, HDM::internal_np::stage_visitor);
+  auto stage_done = [&](HDM::Hex_dominant_stage s, double t) {
+    if constexpr(!std::is_same<decltype(v), CGAL::internal_np::Param_not_found>::value)
+      if(!GSM_mesh_optimization::internal::visit(v, s, t)) r.stopped_by_visitor = true;
+  };
+  // read from the merging's threads: no write to `r` here
+  const std::function<bool()> must_stop = [&]() { return r.stopped_by_visitor || time_limit.is_reached(); };
+  auto skip_stage = [&]() {
+    if(r.stopped_by_visitor) return true;
+    if(time_limit.is_reached()) r.time_limit_reached = true;
+    return r.time_limit_reached;
+  };
 
   auto pd = TLM_internal::lattice_particles(domain, field, request);
   r.number_of_particles = pd.particles.size();
   r.edge_length = pd.particles.edge_length;
   r.particle_time = pd.particles.time;
-  if(stage_visitor) stage_visitor(HDM::Hex_dominant_stage::PARTICLES, r.particle_time);
+  r.time_limit_reached = pd.particles.time_limit_reached;
+  r.stopped_by_visitor = pd.particles.stopped_by_visitor;
+  stage_done(HDM::Hex_dominant_stage::PARTICLES, r.particle_time);
 
   CGAL::Real_timer timer;
   timer.start();
@@ -90,25 +107,31 @@ make_hex_dominant_mesh(const MeshDomain& domain, const FrameField& field,
   };
   TLM_internal::connect_lattice_particles(c3t3, domain, pd, r.number_of_projected_particles, delaunay_map, B);
   const double boundary_distance = choose_parameter(get_parameter(np, HDM::internal_np::boundary_distance), 0.);
-  if(boundary_distance > 0 && c3t3.number_of_cells_in_complex() > 0)
+  if(boundary_distance > 0 && c3t3.number_of_cells_in_complex() > 0 && !skip_stage())
     r.number_of_boundary_points =
         refine_boundary(c3t3, domain, pd, boundary_distance, delaunay_map, B, r.number_of_projected_particles);
   if(c3t3.number_of_cells_in_complex() == 0)
     throw std::invalid_argument("make_hex_dominant_mesh_3: the particles make no cell inside the domain "
                                 "(edge length too large for it?)");
   // the cells of the lattice are cubes in the field's space: their tets must be Delaunay there
-  if(!isotropic) {
+  if(!isotropic && !skip_stage()) {
     TLM_internal::Metric_Delaunay_flips<C3T3> flips(c3t3, B);
     r.number_of_metric_flips = flips.run(20 * c3t3.number_of_cells_in_complex());
   }
   r.tetrahedra_time = timer.time();
-  if(stage_visitor) stage_visitor(HDM::Hex_dominant_stage::TETRAHEDRA, r.tetrahedra_time);
+  stage_done(HDM::Hex_dominant_stage::TETRAHEDRA, r.tetrahedra_time);
 
   timer.reset();
-  auto mesh = tets_to_hex_dominant(c3t3, HDM::parameters::frame_field(std::cref(field),
-                                                HDM::parameters::merge_report(&r.merge, np)));
+  Tetrahedral_adjacency adjacency;
+  std::vector<typename MeshDomain::R::Point_3> points;
+  indexed_tets(c3t3, adjacency, points);
+  // the merging's own time limit is the whole call's (`must_stop`)
+  auto mesh = merge_tets(adjacency, std::move(points),
+                         HDM::parameters::frame_field(std::cref(field), HDM::parameters::merge_report(&r.merge, np)),
+                         must_stop);
+  if(r.merge.stopped && !r.stopped_by_visitor) r.time_limit_reached = true;
   r.merge_time = timer.time();
-  if(stage_visitor) stage_visitor(HDM::Hex_dominant_stage::MERGING, r.merge_time);
+  stage_done(HDM::Hex_dominant_stage::MERGING, r.merge_time);
   C3T3* tets = choose_parameter(get_parameter(np, HDM::internal_np::tetrahedral_mesh), static_cast<C3T3*>(nullptr));
   if(tets) *tets = std::move(c3t3);
   return mesh;
@@ -154,7 +177,7 @@ Tetrahedral_lattice_meshing::internal::Lattice_request read_hex_dominant_request
  * \cgalNamedParamsBegin
  *   \cgalParamNBegin{the named parameters of `lattice_particles_3()`}
  *     \cgalParamDescription{`edge_length` or `number_of_particles`, `random_seed`,
- *       `number_of_threads`, `maximum_running_time` (the particles' share), the particle rounds'
+ *       `number_of_threads`, `maximum_running_time` (see below), the particle rounds'
  *       `visitor`, ...; the lattice is the cubic one}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{the named parameters of `tets_to_hex_dominant()`}
@@ -170,8 +193,10 @@ Tetrahedral_lattice_meshing::internal::Lattice_request read_hex_dominant_request
  *     \cgalParamType{`double`} \cgalParamDefault{0: no refinement}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{Hex_dominant_meshing::parameters::stage_visitor}
- *     \cgalParamDescription{called after each stage with the stage and its seconds}
- *     \cgalParamType{a callable `void(Hex_dominant_meshing::Hex_dominant_stage, double)`} \cgalParamDefault{none}
+ *     \cgalParamDescription{called after each stage with the stage and its seconds; if it returns
+ *       `false`, the stages after it do only what a valid mesh needs (see below)}
+ *     \cgalParamType{a callable `void(Hex_dominant_meshing::Hex_dominant_stage, double)` or
+ *       `bool(Hex_dominant_meshing::Hex_dominant_stage, double)`} \cgalParamDefault{none}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{Hex_dominant_meshing::parameters::tetrahedral_mesh}
  *     \cgalParamDescription{receives the tets that were merged (e.g. to merge them again with
@@ -183,6 +208,15 @@ Tetrahedral_lattice_meshing::internal::Lattice_request read_hex_dominant_request
  *     \cgalParamType{`Hex_dominant_meshing::Hex_dominant_report*`} \cgalParamDefault{none}
  *   \cgalParamNEnd
  * \cgalNamedParamsEnd
+ *
+ * `maximum_running_time` (seconds from the call, 0: none) is shared by the stages: the
+ * particles' rounds and the merging's candidate search stop once it is reached, the boundary
+ * refinement and the flips do not start after it, and the result is a valid mesh whose tets
+ * not merged stay tetrahedra (`Hex_dominant_report::time_limit_reached`). The stages without
+ * which there is no mesh always run: the boundary's sampling, the first particles and their
+ * connection into tets (and, in the overload without a field, the cross field's mesh and
+ * least-squares solve). A visitor that returns `false` (the particle rounds' `visitor` or the
+ * `stage_visitor`) stops the same way (`Hex_dominant_report::stopped_by_visitor`).
  *
  * \throw std::invalid_argument before any work on bad input (as `lattice_particles_3()`:
  *   empty domain, bad sizes or counts, degenerate field; a lattice other than cubic; a quality
@@ -209,9 +243,11 @@ Hex_dominant_mesh_3<typename MeshDomain::R::Point_3>
 make_hex_dominant_mesh_3(const MeshDomain& domain, const Named_function_parameters<T, Tag, Base>& np)
 {
   namespace HDM_internal = Hex_dominant_meshing::internal;
+  namespace TLM_internal = Tetrahedral_lattice_meshing::internal;
   const auto r = HDM_internal::read_hex_dominant_request(np);
-  return HDM_internal::make_hex_dominant_mesh<C3T3>(
-      domain, Tetrahedral_lattice_meshing::internal::default_frame_field(domain, r), r, np);
+  const GSM_mesh_optimization::internal::Time_limit time_limit(r.options.time_limit);
+  const auto field = TLM_internal::default_frame_field(domain, r);
+  return HDM_internal::make_hex_dominant_mesh<C3T3>(domain, field, TLM_internal::with_time_left(r, time_limit), np);
 }
 
 } // namespace CGAL

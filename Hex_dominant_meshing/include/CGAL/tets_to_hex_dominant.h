@@ -8,6 +8,7 @@
 #define CGAL_TETS_TO_HEX_DOMINANT_H
 
 #include <CGAL/Hex_dominant_mesh_3.h>
+#include <CGAL/GSM_mesh_optimization/internal/Stopping.h>
 #include <CGAL/Hex_dominant_meshing/internal/Conforming_selection.h>
 #include <CGAL/Hex_dominant_meshing/internal/Merge_candidates.h>
 #include <CGAL/Hex_dominant_meshing/internal/Tetrahedral_adjacency.h>
@@ -53,6 +54,9 @@ struct Hex_dominant_merge_report
   std::vector<std::array<std::size_t, 4>> tets;
   double candidate_time = 0;                     ///< seconds
   double selection_time = 0;                     ///< seconds
+  /// `maximum_running_time` (or `make_hex_dominant_mesh_3()`'s stop) cut the candidate search
+  /// short: the tets not searched stay tetrahedra
+  bool stopped = false;
 };
 
 namespace internal {
@@ -117,9 +121,11 @@ struct Triangulation_of<Mesh_complex_3_in_triangulation_3<Tr, CornerIndex, Curve
 namespace Hex_dominant_meshing {
 namespace internal {
 
+/// `stop`: a request to stop of the caller's, asked from several threads at once, besides
+/// the `maximum_running_time` of `np`
 template <class Point_3, class NamedParameters>
 Hex_dominant_mesh_3<Point_3> merge_tets(Tetrahedral_adjacency& mesh, std::vector<Point_3>&& points,
-                                        const NamedParameters& np)
+                                        const NamedParameters& np, const std::function<bool()>& stop = {})
 {
   namespace HDM = Hex_dominant_meshing;
   using CGAL::parameters::choose_parameter;
@@ -131,6 +137,11 @@ Hex_dominant_mesh_3<Point_3> merge_tets(Tetrahedral_adjacency& mesh, std::vector
   const HDM::Cell_types types = choose_parameter(get_parameter(np, HDM::internal_np::cell_types), HDM::Cell_types::ALL);
   const int threads = choose_parameter(get_parameter(np, Tetrahedral_lattice_meshing::internal_np::number_of_threads), 0);
   if(threads < 0) throw std::invalid_argument("tets_to_hex_dominant: the number of threads must be non-negative");
+  const double seconds = choose_parameter(get_parameter(np, CGAL::internal_np::maximum_running_time), 0.);
+  if(!(seconds >= 0))
+    throw std::invalid_argument("tets_to_hex_dominant: maximum_running_time must be non-negative (0: no limit)");
+  const GSM_mesh_optimization::internal::Time_limit time_limit(seconds);
+  const std::function<bool()> must_stop = [&]() { return time_limit.is_reached() || (stop && stop()); };
   HDM::Hex_dominant_merge_report* report = choose_parameter(get_parameter(np, HDM::internal_np::merge_report),
                                                             static_cast<HDM::Hex_dominant_merge_report*>(nullptr));
   Merge_candidate_finder::Frame_inverse B;
@@ -158,11 +169,12 @@ Hex_dominant_mesh_3<Point_3> merge_tets(Tetrahedral_adjacency& mesh, std::vector
   Conforming_selection selection(mesh);
   std::array<std::size_t, 3> number_of_candidates{};
   double candidate_time = 0;
-  for(int kind = 0; kind < 3; ++kind) {
+  bool stopped = false;
+  for(int kind = 0; kind < 3 && !stopped; ++kind) {
     if((kind == 1 && types == HDM::Cell_types::HEXAHEDRA) || (kind == 2 && types != HDM::Cell_types::ALL)) break;
     const double start = timer.time();
-    const std::vector<Merge_candidate> candidates =
-        finder.find(kind == 0, kind == 1, kind == 2, kind == 0 ? nullptr : &selection.result().owner);
+    const std::vector<Merge_candidate> candidates = finder.find(
+        kind == 0, kind == 1, kind == 2, kind == 0 ? nullptr : &selection.result().owner, must_stop, &stopped);
     candidate_time += timer.time() - start;
     number_of_candidates[std::size_t(kind)] = candidates.size();
     selection.select(candidates);
@@ -202,6 +214,7 @@ Hex_dominant_mesh_3<Point_3> merge_tets(Tetrahedral_adjacency& mesh, std::vector
     report->tets = mesh.tets;
     report->candidate_time = candidate_time;
     report->selection_time = timer.time() - candidate_time;
+    report->stopped = stopped;
   }
   return out;
 }
@@ -250,10 +263,16 @@ Hex_dominant_mesh_3<Point_3> merge_tets(Tetrahedral_adjacency& mesh, std::vector
  *     \cgalParamDescription{receives the candidate counts, the tets of each cell and the times}
  *     \cgalParamType{`Hex_dominant_meshing::Hex_dominant_merge_report*`} \cgalParamDefault{none}
  *   \cgalParamNEnd
+ *   \cgalParamNBegin{maximum_running_time}
+ *     \cgalParamDescription{a time limit in seconds, from the call: the candidate search stops once
+ *       it is reached, the candidates found are selected as usual and the other tets stay
+ *       tetrahedra (`Hex_dominant_merge_report::stopped`); 0 for none}
+ *     \cgalParamType{`double`, non-negative} \cgalParamDefault{0}
+ *   \cgalParamNEnd
  * \cgalNamedParamsEnd
  *
  * \returns the hex-dominant mesh, its points those of the tets' vertices
- * \throw std::invalid_argument if the quality bound is not in [0, 1], if a vertex is not
+ * \throw std::invalid_argument if the quality bound is not in [0, 1], the time limit negative, if a vertex is not
  *   finite or a facet is shared by more than two tets
  */
 template <class TetMesh, class T, class Tag, class Base>

@@ -7,6 +7,7 @@
 #ifndef CGAL_LATTICE_PARTICLES_3_H
 #define CGAL_LATTICE_PARTICLES_3_H
 
+#include <CGAL/GSM_mesh_optimization/internal/Stopping.h>
 #include <CGAL/Tetrahedral_lattice_meshing/internal/Domain_boundary.h>
 #include <CGAL/Tetrahedral_lattice_meshing/internal/Domain_cross_field.h>
 #include <CGAL/Tetrahedral_lattice_meshing/internal/Lattice_optimizer.h>
@@ -21,10 +22,14 @@
 
 #include <tbb/global_control.h>
 
+#include <unistd.h>
+
 #include <cmath>
+#include <iomanip>
 #include <iostream>
 #include <limits>
 #include <memory>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
@@ -33,10 +38,57 @@ namespace CGAL {
 namespace Tetrahedral_lattice_meshing {
 
 /// \ingroup PkgTetrahedralLatticeMeshingRef
-/// the largest number of particles `lattice_particles_3()` accepts to make (memory: about 2 kB each)
+/// the largest number of particles `lattice_particles_3()` accepts to make; fewer if the
+/// machine's memory cannot hold them (`bytes_per_particle`)
 constexpr double maximum_number_of_particles = 2e7;
 
+/// \ingroup PkgTetrahedralLatticeMeshingRef
+/// the memory a particle takes at the peak of `make_hex_dominant_mesh_3()`, the largest of
+/// the three entry points (particles, tets, candidates), rounded up from the measured slope
+/// (`benchmark/Hex_dominant_meshing/memory.md`): requests that would need more than the
+/// machine's physical memory are refused before any work
+constexpr double bytes_per_particle = 10e3;
+
 namespace internal {
+
+/// the machine's physical memory in bytes (0 if unknown)
+inline double physical_memory()
+{
+#if defined(_SC_PHYS_PAGES) && defined(_SC_PAGE_SIZE)
+  const long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGE_SIZE);
+  return pages > 0 && page > 0 ? double(pages) * double(page) : 0.;
+#else
+  return 0.;
+#endif
+}
+
+/// `x` as people read it: 1234567 -> "1.23 million", 12345 -> "12345", 0.000125 -> "0.000125"
+inline std::string readable(double x)
+{
+  std::ostringstream os;
+  os << std::setprecision(3);
+  const double a = std::abs(x);
+  if(a >= 1 && a < 1e6) os << std::llround(x);
+  else if(a >= 1e6 && a < 1e9) os << x / 1e6 << " million";
+  else if(a >= 1e9 && a < 1e12) os << x / 1e9 << " billion";
+  else os << x;
+  return os.str();
+}
+
+/// refuses, before any work, `n` particles of `lattice_particles_3()` (for `what`, e.g.
+/// "the edge length 0.001") over `maximum_number_of_particles` or the machine's memory
+inline void check_particle_count(double n, const std::string& what)
+{
+  const double memory = physical_memory(), need = n * bytes_per_particle;
+  const std::string estimate = what + " would need about " + readable(n) + " particles, about " +
+                               readable(need / 1e9) + " GB of memory";
+  if(n > maximum_number_of_particles)
+    throw std::invalid_argument("lattice_particles_3: " + estimate + " (at most " +
+                                readable(maximum_number_of_particles) + " particles)");
+  if(memory > 0 && need > memory)
+    throw std::invalid_argument("lattice_particles_3: " + estimate + ", more than this machine's " +
+                                readable(memory / 1e9) + " GB");
+}
 
 /// the domain's boundary and the particles, as `make_lattice_mesh_3()` needs both
 template <class MeshDomain>
@@ -96,13 +148,14 @@ Lattice_request read_lattice_request(const NamedParameters& np)
   r.threads = choose_parameter(get_parameter(np, TLM::internal_np::number_of_threads), 0);
   auto visitor = get_parameter(np, CGAL::internal_np::visitor);
   if constexpr(!std::is_same<decltype(visitor), CGAL::internal_np::Param_not_found>::value)
-    o.visitor = [visitor](const Lattice_round_report& report) { visitor(report); };
+    o.visitor = [visitor](const Lattice_round_report& report) {
+      return GSM_mesh_optimization::internal::visit(visitor, report);
+    };
 
   if(has_length && !(r.edge_length > 0 && std::isfinite(r.edge_length)))
     fail("the edge length must be positive and finite");
   if(!has_length && !(r.number_of_particles >= 1)) fail("the number of particles must be at least 1");
-  if(!has_length && r.number_of_particles > maximum_number_of_particles)
-    fail("at most " + std::to_string(maximum_number_of_particles) + " particles");
+  if(!has_length) check_particle_count(r.number_of_particles, "number_of_particles");
   if(has_sigma && !(o.sigma > 0 && std::isfinite(o.sigma))) fail("the kernel width must be positive and finite");
   if(has_radius && !(o.radius > 0 && std::isfinite(o.radius))) fail("the neighbour radius must be positive and finite");
   if(has_levels && (o.levels < 0 || o.levels > 6)) fail("the number of multiresolution levels must be in [0, 6]");
@@ -123,10 +176,10 @@ double edge_length_from_box(const MeshDomain& domain, double det_B, const Lattic
   if(!lo.allFinite() || !hi.allFinite() || !((hi - lo).prod() > 0)) fail("the domain's bounding box is empty or not finite");
   const double box_volume = (hi - lo).prod() * std::abs(det_B);
   const double l = r.edge_length;
-  if(r.has_length && box_volume * r.lattice.particles_per_cube / (l * l * l) > 8 * maximum_number_of_particles)
-    fail("the edge length " + std::to_string(l) + " would need about " +
-         std::to_string(box_volume * r.lattice.particles_per_cube / (l * l * l)) + " particles (at most " +
-         std::to_string(maximum_number_of_particles) + ")");
+  // the box holds the domain: a domain filling an eighth of it or more would need the
+  // particles of the box's eighth (refused here before the boundary's sampling)
+  if(r.has_length) check_particle_count(box_volume * r.lattice.particles_per_cube / (l * l * l) / 8,
+                                        "the edge length " + readable(l));
   return r.has_length ? l : std::cbrt(box_volume * r.lattice.particles_per_cube / r.number_of_particles);
 }
 
@@ -137,6 +190,7 @@ Particles_in_domain<MeshDomain> lattice_particles(const MeshDomain& domain, cons
   typedef typename MeshDomain::R K;
   typedef typename K::Point_3 Point_3;
   auto fail = [](const std::string& m) { throw std::invalid_argument("lattice_particles_3: " + m); };
+  const GSM_mesh_optimization::internal::Time_limit time_limit(r.options.time_limit);
 
   const auto bb = domain.bbox();
   // the frame at the box's centre, or, where it is degenerate (a hole of the domain on the
@@ -171,14 +225,14 @@ Particles_in_domain<MeshDomain> lattice_particles(const MeshDomain& domain, cons
   const double l = r.has_length ? r.edge_length : lattice_edge_length(r.lattice, measures, r.number_of_particles);
   if(!(l < std::numeric_limits<double>::infinity())) fail("too few particles for the domain's corners");
   const double n = lattice_particle_count(r.lattice, measures, l);
-  if(n > maximum_number_of_particles)
-    fail("the edge length " + std::to_string(l) + " would need about " + std::to_string(n) + " particles (at most " +
-         std::to_string(maximum_number_of_particles) + ")");
+  check_particle_count(n, "the edge length " + readable(l));
   if(measures.volume * r.lattice.particles_per_cube / (l * l * l) < 1)
-    fail("the edge length " + std::to_string(l) + " is larger than the domain (under one lattice cell in it)");
+    fail("the edge length " + readable(l) + " is larger than the domain (under one lattice cell in it)");
   // n: the lattice's estimated count
   typedef Lattice_optimizer<FrameField, Domain_boundary<MeshDomain, K>, Point_3> Optimizer;
-  auto optimizer = [&](const Lattice_options& o) {
+  // each optimizer gets the time left
+  auto optimizer = [&](Lattice_options o) {
+    o.time_limit = time_limit.remaining();
     return std::make_unique<Optimizer>(r.lattice, field, *out.boundary, l, o);
   };
   if(r.options.levels < 0 && r.lattice.type == Lattice_type::CUBIC)
@@ -208,11 +262,11 @@ Particles_in_domain<MeshDomain> lattice_particles(const MeshDomain& domain, cons
     std::unique_ptr<Optimizer> kept = optimizer(o);
     int levels = o.levels;
     const double energy = kept->optimize();
-    if(o.levels > k0 && !kept->time_limit_reached()) {
+    if(o.levels > k0 && !kept->stopped()) {
       o.levels = k0;
-      if(o.time_limit > 0) o.time_limit = (std::max)(o.time_limit - timer.time(), 1e-9);
       std::unique_ptr<Optimizer> other = optimizer(o);
       const double other_energy = other->optimize();
+      if(other->stopped_by_visitor()) kept->request_stop();
       if(r.options.verbose)
         std::cerr << "  lattice: " << k0 + 1 << " levels: energy/particle " << energy << ", " << k0
                   << " levels: " << other_energy << "; kept " << (other_energy < energy ? k0 : k0 + 1) << "\n";
@@ -238,7 +292,14 @@ Frame_fields::Discrete_frame_field_3<typename Kernel_traits<typename MeshDomain:
 default_frame_field(const MeshDomain& domain,
                                                                                 const Lattice_request& r)
 {
-  return domain_cross_field(domain, edge_length_from_box(domain, 1., r));
+  return domain_cross_field(domain, edge_length_from_box(domain, 1., r), r.options.time_limit);
+}
+
+/// `r` with the time `limit` leaves as its time limit: what the stages after the field get
+inline Lattice_request with_time_left(Lattice_request r, const GSM_mesh_optimization::internal::Time_limit& limit)
+{
+  r.options.time_limit = limit.remaining();
+  return r;
 }
 
 } // namespace internal
@@ -319,12 +380,19 @@ default_frame_field(const MeshDomain& domain,
  *     \cgalParamType{`int`} \cgalParamDefault{0}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{maximum_running_time}
- *     \cgalParamDescription{a time limit in seconds, checked between rounds; 0 for none}
+ *     \cgalParamDescription{a time limit in seconds, from the call: the rounds stop once it is
+ *       reached and the particles are those of the last round
+ *       (`Lattice_particles_3::time_limit_reached`); the boundary's sampling and the first
+ *       particles always run (and, in the overload without a field, the mesh and the
+ *       least-squares solve of the cross field); 0 for none}
  *     \cgalParamType{`double`} \cgalParamDefault{0}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{visitor}
- *     \cgalParamDescription{called after each round with its report (energy, particles deleted and inserted, time)}
- *     \cgalParamType{a callable `void(const Tetrahedral_lattice_meshing::Lattice_round_report&)`}
+ *     \cgalParamDescription{called after each round with its report (energy, particles deleted and
+ *       inserted, time); if it returns `false`, the rounds stop there
+ *       (`Lattice_particles_3::stopped_by_visitor`)}
+ *     \cgalParamType{a callable `void(const Tetrahedral_lattice_meshing::Lattice_round_report&)` or
+ *       `bool(const Tetrahedral_lattice_meshing::Lattice_round_report&)`}
  *     \cgalParamDefault{none}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{verbose}
@@ -335,7 +403,9 @@ default_frame_field(const MeshDomain& domain,
  * \return the particles with their kinds and features, \f$ l^* \f$, the final energy and the time
  * \throw std::invalid_argument before any optimization on a bad parameter, a degenerate frame,
  *   an empty domain, an edge length larger than the domain, or a request of more than
- *   `Tetrahedral_lattice_meshing::maximum_number_of_particles` particles
+ *   `Tetrahedral_lattice_meshing::maximum_number_of_particles` particles or of more memory than
+ *   the machine has (`Tetrahedral_lattice_meshing::bytes_per_particle` each; the message gives
+ *   the estimate)
  */
 template <class MeshDomain, class FrameField, class NamedParameters = parameters::Default_named_parameters>
 Tetrahedral_lattice_meshing::Lattice_particles_3<typename MeshDomain::R::Point_3>
@@ -359,7 +429,9 @@ lattice_particles_3(const MeshDomain& domain, const Named_function_parameters<T,
 {
   namespace TLM_internal = Tetrahedral_lattice_meshing::internal;
   const TLM_internal::Lattice_request r = TLM_internal::read_lattice_request(np);
-  return TLM_internal::lattice_particles(domain, TLM_internal::default_frame_field(domain, r), r).particles;
+  const GSM_mesh_optimization::internal::Time_limit time_limit(r.options.time_limit);
+  const auto field = TLM_internal::default_frame_field(domain, r);
+  return TLM_internal::lattice_particles(domain, field, TLM_internal::with_time_left(r, time_limit)).particles;
 }
 
 /// \ingroup PkgTetrahedralLatticeMeshingRef

@@ -57,6 +57,11 @@ struct Lattice_mesh_report
   std::size_t number_of_projected_particles = 0; ///< free particles the complex left on its boundary, put onto the surface
   std::size_t number_of_metric_flips = 0; ///< flips that made the tets Delaunay in the field's space (anisotropic fields)
   bool metric_is_anisotropic = false; ///< the last stage ran in the metric \f$ B^T B \f$ (the frames are not all rotations)
+  /// `maximum_running_time` stopped a stage: the particles' rounds or the last stage, or left
+  /// no time for the last stage (the mesh is valid, its vertices those of the last round)
+  bool time_limit_reached = false;
+  /// the visitor returned `false`: the particles' rounds stopped there and the last stage did not run
+  bool stopped_by_visitor = false;
 };
 
 namespace internal {
@@ -136,13 +141,13 @@ constexpr double lattice_mean_angle_threshold = 60;
 /// aiming at `sliver_bound` degrees (0: none), then its mean-angle moves
 /// under `mean_angle_threshold` degrees (0: none); `time_limit` 0 for none
 template <class C3T3, class MeshDomain, class FrameField>
-void optimize_lattice_mesh(C3T3& c3t3, const MeshDomain& domain, const FrameField& field, const Lattice& lattice,
+Mesh_optimization_return_code optimize_lattice_mesh(C3T3& c3t3, const MeshDomain& domain, const FrameField& field, const Lattice& lattice,
                            Lattice_mesh_optimization stage, double sliver_bound, int threads, double time_limit,
                            Lattice_mesh_report& r, double mean_angle_threshold = lattice_mean_angle_threshold)
 {
   namespace GSM = GSM_mesh_optimization;
   typedef typename MeshDomain::R::Point_3 Point_3;
-  if(stage == Lattice_mesh_optimization::NONE) return;
+  if(stage == Lattice_mesh_optimization::NONE) return CONVERGENCE_REACHED;
   CGAL::Real_timer timer;
   timer.start();
   std::vector<Point_3> points;
@@ -157,15 +162,17 @@ void optimize_lattice_mesh(C3T3& c3t3, const MeshDomain& domain, const FrameFiel
       GSM::parameters::shortest_polishing_moves(true, GSM::parameters::sliver_bound(sliver_bound,
       GSM::parameters::smooth_vertices(stage == Lattice_mesh_optimization::GSM,
       GSM::parameters::number_of_threads(threads, CGAL::parameters::maximum_running_time(time_limit)))))));
+  Mesh_optimization_return_code code;
   if(r.metric_is_anisotropic) {
     auto metric = [&field](const Eigen::Vector3d& x) {
       const Eigen::Matrix3d B = field.B(Point_3(x[0], x[1], x[2]));
       return Eigen::Matrix3d(B.transpose() * B);
     };
-    CGAL::gsm_optimize_mesh_3(c3t3, domain, GSM::parameters::metric_field(metric, gsm_np));
+    code = CGAL::gsm_optimize_mesh_3(c3t3, domain, GSM::parameters::metric_field(metric, gsm_np));
   } else // rotations of one scale: the lattice's edge length is the target everywhere
-    CGAL::gsm_optimize_mesh_3(c3t3, domain, GSM::parameters::uniform_sizing(true, gsm_np));
+    code = CGAL::gsm_optimize_mesh_3(c3t3, domain, GSM::parameters::uniform_sizing(true, gsm_np));
   r.gsm_time = timer.time();
+  return code;
 }
 
 /// the particles connected into `c3t3` (`connect_particles()`); free particles the complex
@@ -238,11 +245,14 @@ C3T3 make_lattice_mesh(const MeshDomain& domain, const FrameField& field, const 
   Lattice_mesh_report local;
   Lattice_mesh_report& r = report ? *report : local;
   r = Lattice_mesh_report();
+  const GSM_mesh_optimization::internal::Time_limit time_limit(request.options.time_limit);
 
   auto pd = lattice_particles(domain, field, request);
   r.number_of_particles = pd.particles.size();
   r.edge_length = pd.particles.edge_length;
   r.particle_time = pd.particles.time;
+  r.time_limit_reached = pd.particles.time_limit_reached;
+  r.stopped_by_visitor = pd.particles.stopped_by_visitor;
 
   CGAL::Real_timer timer;
   timer.start();
@@ -258,7 +268,7 @@ C3T3 make_lattice_mesh(const MeshDomain& domain, const FrameField& field, const 
   if(c3t3.number_of_cells_in_complex() == 0)
     throw std::invalid_argument("make_lattice_mesh_3: the particles make no cell inside the domain "
                                 "(edge length too large for it?)");
-  if(!isotropic) {
+  if(!isotropic && !time_limit.is_reached()) {
     typedef Metric_Delaunay_flips<C3T3> Flips;
     const std::size_t max_flips = 20 * c3t3.number_of_cells_in_complex();
     Flips flips(c3t3, B, Flips::Flat_boundary_cells::FORBIDDEN);
@@ -268,10 +278,11 @@ C3T3 make_lattice_mesh(const MeshDomain& domain, const FrameField& field, const 
   r.number_of_feature_edges = cr.number_of_feature_edges;
   r.number_of_surface_facets = cr.number_of_surface_facets;
   r.connection_time = timer.time();
-  const double time_limit = request.options.time_limit;
-  const double left = time_limit > 0 ? (std::max)(1., time_limit - r.particle_time - r.connection_time) : 0.;
-  optimize_lattice_mesh(c3t3, domain, field, request.lattice, stage, sliver_bound, request.threads, left, r,
-                        mean_angle_threshold);
+  if(time_limit.is_reached()) r.time_limit_reached = true;
+  if(r.time_limit_reached || r.stopped_by_visitor) return c3t3;
+  if(optimize_lattice_mesh(c3t3, domain, field, request.lattice, stage, sliver_bound, request.threads,
+                           time_limit.remaining(), r, mean_angle_threshold) == TIME_LIMIT_REACHED)
+    r.time_limit_reached = true;
   return c3t3;
 }
 
@@ -339,8 +350,14 @@ C3T3 make_lattice_mesh(const MeshDomain& domain, const FrameField& field, const 
  *   \cgalParamNEnd
  * \cgalNamedParamsEnd
  *
- * `maximum_running_time` bounds the particle optimization; the last stage gets the time left
- * (at least one second) when a limit is given.
+ * `maximum_running_time` (seconds from the call, 0: none) is shared by the stages: the
+ * particles' rounds, then the last stage, stop once it is reached, and a stage that finds it
+ * reached does not start; the result is a valid mesh of the particles of the last round
+ * (`Lattice_mesh_report::time_limit_reached`). The stages without which there is no mesh
+ * always run: the boundary's sampling, the first particles and their connection (and, in the
+ * overload without a field, the cross field's mesh and least-squares solve). A visitor
+ * (`lattice_particles_3()`'s) that returns `false` stops the rounds there; the last stage
+ * does not run (`Lattice_mesh_report::stopped_by_visitor`).
  *
  * \throw std::invalid_argument as `lattice_particles_3()`, before any work, on bad input
  *   (and on a sliver bound outside [0, 70.5) or a negative mean-angle threshold);
@@ -368,7 +385,9 @@ C3T3 make_lattice_mesh_3(const MeshDomain& domain, const Named_function_paramete
   const TLM_internal::Lattice_request r = TLM_internal::read_lattice_request(np);
   TLM_internal::lattice_mesh_sliver_bound(np); // checked before the field is made
   TLM_internal::lattice_mesh_mean_angle_threshold(np);
-  return TLM_internal::make_lattice_mesh<C3T3>(domain, TLM_internal::default_frame_field(domain, r), r, np);
+  const GSM_mesh_optimization::internal::Time_limit time_limit(r.options.time_limit);
+  const auto field = TLM_internal::default_frame_field(domain, r);
+  return TLM_internal::make_lattice_mesh<C3T3>(domain, field, TLM_internal::with_time_left(r, time_limit), np);
 }
 
 /// \ingroup PkgTetrahedralLatticeMeshingRef

@@ -132,6 +132,16 @@ def _seed(seed):
     return _integer(seed, "seed", 0, 2**32 - 1)
 
 
+def _time_limit(time_limit):
+    """None or 0: no limit, as vvm-mesh's --time-limit"""
+    if time_limit is None:
+        return 0.0
+    seconds = float(time_limit)
+    if not (seconds >= 0 and seconds < 1e12):
+        raise ValueError("time_limit must be a non-negative number of seconds (None or 0: no limit)")
+    return seconds
+
+
 def _indices(array, name):
     """`array` as C-contiguous int64 indices; ValueError for non-integers and indices past int64"""
     array = np.asarray(array)
@@ -246,7 +256,7 @@ def _from_mesh(mesh):
 
 
 def tet_mesh(surface, method="gsm", vertices=None, size=None, features_angle=None, field=None, threads=None, seed=0,
-             progress=None):
+             progress=None, time_limit=None):
     """A tetrahedral mesh of a closed surface or a labelled 3D image.
 
     ``surface``: a file (OFF, OBJ, PLY, STL, ...; or a labelled image, .inr / .inr.gz, each
@@ -260,6 +270,8 @@ def tet_mesh(surface, method="gsm", vertices=None, size=None, features_angle=Non
     boundary-aligned cross field), ``"identity"``, a frame-field file or a
     :class:`FrameField`; for lattices, and GSM's target metric when a file or FrameField.
     ``threads``: None or 0 for all cores. ``seed``: the same seed and threads give the same mesh.
+    ``time_limit``: seconds of the optimizer (or the lattice), None for none: it stops with a
+    valid mesh and ``mesh.info["time_limit_reached"]`` true (make_mesh_3 is not counted).
 
     Returns a ``meshio.Mesh``. Raises ``ValueError`` on bad input (open, self-intersecting
     or non-manifold surfaces, NaN, unknown method, bad sizes).
@@ -273,12 +285,12 @@ def tet_mesh(surface, method="gsm", vertices=None, size=None, features_angle=Non
     source = _surface(surface)
     with _Field_file(field) as field_path:
         arrays = _vvm.tet_mesh(source, str(method), count, edge, _angle(features_angle), field_path,
-                               _threads(threads), _seed(seed), _progress(progress))
+                               _threads(threads), _seed(seed), _time_limit(time_limit), _progress(progress))
     return _to_meshio(arrays)
 
 
 def hex_dominant(surface, particles=None, size=None, q_bound=0.5, boundary_distance=0.0, features_angle=None,
-                 field=None, threads=None, seed=0, progress=None):
+                 field=None, threads=None, seed=0, progress=None, time_limit=None):
     """A hex-dominant mesh of a closed surface: hexahedra, prisms, pyramids and tetrahedra.
 
     Particles form a cubic lattice aligned with ``field`` (default the boundary-aligned cross
@@ -287,6 +299,8 @@ def hex_dominant(surface, particles=None, size=None, q_bound=0.5, boundary_dista
     ``particles`` (default 30000) or ``size`` (the lattice's edge length);
     ``boundary_distance``: the boundary refinement's distance (0: none). ``surface``,
     ``features_angle``, ``field``, ``threads``, ``seed``, ``progress`` as in :func:`tet_mesh`.
+    ``time_limit``: seconds (field, particles, merging), None for none: the tets not merged by
+    then stay tetrahedra and ``mesh.info["time_limit_reached"]`` is true.
 
     Returns a ``meshio.Mesh`` with hexahedron, wedge, pyramid and tetra blocks.
 
@@ -300,12 +314,12 @@ def hex_dominant(surface, particles=None, size=None, q_bound=0.5, boundary_dista
     with _Field_file(field) as field_path:
         arrays = _vvm.hex_dominant(source, count, edge, float(q_bound), float(boundary_distance),
                                    _angle(features_angle), field_path, _threads(threads), _seed(seed),
-                                   _progress(progress))
+                                   _time_limit(time_limit), _progress(progress))
     return _to_meshio(arrays)
 
 
 def optimize(mesh, features_angle=None, fixed_boundary=False, boundary_distance=None, threads=None, seed=0,
-             progress=None):
+             progress=None, time_limit=None):
     """GSM on a tetrahedral mesh made by any mesher (TetGen, Gmsh, ...): its slivers removed
     without re-meshing.
 
@@ -317,6 +331,7 @@ def optimize(mesh, features_angle=None, fixed_boundary=False, boundary_distance=
     (default 60 degrees; 0: none) are kept. ``fixed_boundary``: only interior vertices move.
     ``boundary_distance``: how far the boundary may stray from the input's (None: 1% of the
     mean boundary edge length; 0: boundary vertices slide on flat parts only).
+    ``time_limit``: seconds of GSM, None for none (``mesh.info["time_limit_reached"]``).
 
     Returns a ``meshio.Mesh`` with the labels kept; ``mesh.info`` has the boundary's
     two-sided distance to the input's (``boundary_hausdorff``). Raises ``ValueError`` for
@@ -336,7 +351,7 @@ def optimize(mesh, features_angle=None, fixed_boundary=False, boundary_distance=
     if boundary_distance is not None and not distance >= 0:
         raise ValueError("boundary_distance must be non-negative (None: 1% of the mean boundary edge)")
     arrays = _vvm.optimize(points, types, connectivity, labels, _angle(features_angle), bool(fixed_boundary),
-                           distance, _threads(threads), _seed(seed), _progress(progress))
+                           distance, _threads(threads), _seed(seed), _time_limit(time_limit), _progress(progress))
     return _to_meshio(arrays)
 
 
@@ -393,9 +408,10 @@ class FrameField:
         return meshio.Mesh(self.points, [("tetra", self.tetrahedra)], point_data={"frame": flat})
 
 
-def cross_field(surface, vertices=None, size=None, features_angle=None, seed=0, progress=None):
+def cross_field(surface, vertices=None, size=None, features_angle=None, seed=0, progress=None, time_limit=None):
     """The boundary-aligned cross field of a closed surface (what ``vvm-mesh field`` writes),
     on a make_mesh_3 mesh of ``vertices`` (default 10000) or of edge length ``size``.
+    ``time_limit``: seconds of its smoothing, None for none (``field.report["time_limit_reached"]``).
 
     Returns a :class:`FrameField`, which ``tet_mesh`` and ``hex_dominant`` take as ``field``.
 
@@ -406,7 +422,7 @@ def cross_field(surface, vertices=None, size=None, features_angle=None, seed=0, 
     """
     count, edge = _size(vertices, size, "vertices", 10000)
     return FrameField._of(_vvm.cross_field(_surface(surface), count, edge, _angle(features_angle), _seed(seed),
-                                           _progress(progress)))
+                                           _time_limit(time_limit), _progress(progress)))
 
 
 def quality(mesh):

@@ -10,6 +10,7 @@
 #include <CGAL/Frame_fields/Discrete_frame_field_3.h>
 #include <CGAL/Frame_fields/Singular_curve.h>
 #include <CGAL/Frame_fields/internal/Cross_field_solver.h>
+#include <CGAL/GSM_mesh_optimization/internal/Stopping.h>
 #include <CGAL/Frame_fields/internal/Indexed_tetrahedral_mesh.h>
 #include <CGAL/Frame_fields/parameters.h>
 
@@ -81,6 +82,10 @@ struct Generated_cross_field_3
   /// `true` if the conjugate gradient did not converge and a sparse LDLT factorization
   /// solved the system instead
   bool direct_solver = false;
+  /// `maximum_running_time` stopped the smoothing rounds
+  bool time_limit_reached = false;
+  /// the visitor returned `false`: the smoothing rounds stopped there
+  bool stopped_by_visitor = false;
 };
 
 namespace internal {
@@ -129,9 +134,17 @@ generate_cross_field(const Indexed_tetrahedral_mesh<Point_3>& mesh, const NamedP
  *     \cgalParamDefault{1e-4}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{visitor}
- *     \cgalParamDescription{called after each smoothing round as `visitor(round, energy)`, rounds counted from 1}
- *     \cgalParamType{a callable `void(int, double)`}
+ *     \cgalParamDescription{called after each smoothing round as `visitor(round, energy)`, rounds
+ *       counted from 1; if it returns `false`, the smoothing stops there (`stopped_by_visitor`)}
+ *     \cgalParamType{a callable `void(int, double)` or `bool(int, double)`}
  *     \cgalParamDefault{none}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{maximum_running_time}
+ *     \cgalParamDescription{a time limit in seconds, from the call: the smoothing rounds stop once
+ *       it is reached (`time_limit_reached`), the field that of the last round; the least-squares
+ *       solve before them always runs (the field needs it); 0 for none}
+ *     \cgalParamType{`double`, non-negative}
+ *     \cgalParamDefault{0}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{Frame_fields::parameters::edge_length}
  *     \cgalParamDescription{the length of the three axes of every frame}
@@ -190,9 +203,17 @@ generate_cross_field_3(const Mesh_complex_3_in_triangulation_3<Tr, CornerIndex, 
  *     \cgalParamDefault{1e-4}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{visitor}
- *     \cgalParamDescription{called after each smoothing round as `visitor(round, energy)`, rounds counted from 1}
- *     \cgalParamType{a callable `void(int, double)`}
+ *     \cgalParamDescription{called after each smoothing round as `visitor(round, energy)`, rounds
+ *       counted from 1; if it returns `false`, the smoothing stops there (`stopped_by_visitor`)}
+ *     \cgalParamType{a callable `void(int, double)` or `bool(int, double)`}
  *     \cgalParamDefault{none}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{maximum_running_time}
+ *     \cgalParamDescription{a time limit in seconds, from the call: the smoothing rounds stop once
+ *       it is reached (`time_limit_reached`), the field that of the last round; the least-squares
+ *       solve before them always runs (the field needs it); 0 for none}
+ *     \cgalParamType{`double`, non-negative}
+ *     \cgalParamDefault{0}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{Frame_fields::parameters::edge_length}
  *     \cgalParamDescription{the length of the three axes of every frame}
@@ -237,13 +258,19 @@ generate_cross_field(const Indexed_tetrahedral_mesh<Point_3>& mesh, const NamedP
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
   typedef typename Kernel_traits<Point_3>::Kernel K;
+  const GSM_mesh_optimization::internal::Time_limit time_limit(
+      choose_parameter(get_parameter(np, CGAL::internal_np::maximum_running_time), 0.));
   const int rounds = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), 100);
   const double tolerance = choose_parameter(get_parameter(np, internal_np::smoothing_tolerance), 1e-4);
-  const std::function<void(int, double)> visitor =
-      choose_parameter(get_parameter(np, CGAL::internal_np::visitor), std::function<void(int, double)>());
+  std::function<bool(int, double)> visitor;
+  auto v = get_parameter(np, CGAL::internal_np::visitor);
+  if constexpr(!std::is_same<decltype(v), CGAL::internal_np::Param_not_found>::value)
+    visitor = [v](int round, double energy) { return GSM_mesh_optimization::internal::visit(v, round, energy); };
   const double edge_length = choose_parameter(get_parameter(np, internal_np::edge_length), 1.);
   const bool verbose = choose_parameter(get_parameter(np, CGAL::internal_np::verbose), false);
   if(rounds < 0) throw std::invalid_argument("generate_cross_field_3: number_of_iterations must be >= 0");
+  if(!(choose_parameter(get_parameter(np, CGAL::internal_np::maximum_running_time), 0.) >= 0))
+    throw std::invalid_argument("generate_cross_field_3: maximum_running_time must be non-negative (0: no limit)");
   if(!(tolerance >= 0) || !std::isfinite(tolerance))
     throw std::invalid_argument("generate_cross_field_3: smoothing_tolerance must be non-negative and finite");
   if(!(edge_length > 0) || !std::isfinite(edge_length))
@@ -259,9 +286,13 @@ generate_cross_field(const Indexed_tetrahedral_mesh<Point_3>& mesh, const NamedP
               << solver.number_of_corner_vertices() << " corners), " << mesh.cells.size()
               << " cells, " << mesh.boundary_facets.size() << " boundary facets, "
               << mesh.feature_edges.size() << " sharp edges\n";
-  Cross_field_solution s = solver.solve(rounds, tolerance, verbose, visitor);
-
   Generated_cross_field_3<K> out;
+  Cross_field_solution s = solver.solve(rounds, tolerance, verbose, [&](int round, double energy) {
+    if(round > 0 && visitor && !visitor(round, energy)) out.stopped_by_visitor = true;
+    else if(time_limit.is_reached()) out.time_limit_reached = true;
+    return !out.stopped_by_visitor && !out.time_limit_reached;
+  }, [&time_limit]() { return time_limit.is_reached(); });
+
   std::vector<Eigen::Matrix3d> frames(s.vertex_frames.size());
   for(std::size_t v = 0; v < frames.size(); ++v) frames[v] = edge_length * s.vertex_frames[v];
   out.field = Discrete_frame_field_3<K>(mesh.points, mesh.cells, std::move(frames), Frame_location::VERTICES);

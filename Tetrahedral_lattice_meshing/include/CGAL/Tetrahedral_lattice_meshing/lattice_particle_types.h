@@ -59,7 +59,8 @@ struct Lattice_particles_3
   int number_of_rounds = 0;   ///< rounds run, all levels together (of the run kept)
   int multiresolution_levels = 0; ///< the levels of the run kept
   double time = 0;            ///< seconds, boundary sampling included
-  bool time_limit_reached = false;
+  bool time_limit_reached = false; ///< `maximum_running_time` stopped the rounds
+  bool stopped_by_visitor = false; ///< the visitor returned `false`: the rounds stopped there
 
   std::size_t size() const { return points.size(); }
   std::size_t number_of(Particle_kind k) const

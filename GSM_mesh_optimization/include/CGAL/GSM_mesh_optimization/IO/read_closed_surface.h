@@ -18,10 +18,13 @@
 
 #include <boost/graph/graph_traits.hpp>
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <fstream>
+#include <iomanip>
 #include <new>
 #include <sstream>
 #include <stdexcept>
@@ -121,6 +124,94 @@ inline std::string lowercase_extension(const std::string& fname)
   return e;
 }
 
+/// a PLY element of the header: its count and properties (a list's size and item types)
+struct Ply_property
+{
+  bool is_list = false;
+  std::string size_type, item_type;
+};
+struct Ply_element
+{
+  double count;
+  std::vector<Ply_property> properties;
+};
+
+/// the bytes of a PLY scalar type (0: unknown)
+inline std::size_t ply_type_size(const std::string& t)
+{
+  if(t == "char" || t == "uchar" || t == "int8" || t == "uint8") return 1;
+  if(t == "short" || t == "ushort" || t == "int16" || t == "uint16") return 2;
+  if(t == "int" || t == "uint" || t == "int32" || t == "uint32" || t == "float" || t == "float32") return 4;
+  if(t == "double" || t == "float64") return 8;
+  return 0;
+}
+
+/// walks the body of a PLY file after its header and refuses a list (a face's vertex indices)
+/// whose size is larger than the file can hold: CGAL 5.5's reader resizes a vector to the
+/// size it reads before reading the items, so 4294967295 in a `uint` size would allocate
+/// 32 GB; and a body that ends before the elements the header declares.
+inline void check_ply_list_sizes(const std::string& fname, std::istream& is, const std::string& format,
+                                 const std::vector<Ply_element>& elements, std::uintmax_t size_of_file)
+{
+  auto refuse = [&](double n) {
+    std::ostringstream count; // a double: a binary size may be far beyond any integer type
+    count << std::setprecision(12) << n;
+    throw std::invalid_argument("'" + fname + "' has a list of " + count.str() + " items: a list size is a whole " +
+                                "number no larger than the file (" + std::to_string(size_of_file) + " bytes)");
+  };
+  const bool ascii = format == "ascii";
+  const bool big_endian = format == "binary_big_endian";
+  if(!ascii && !big_endian && format != "binary_little_endian") return; // CGAL's reader refuses it
+  // the next scalar of type `type`, as a double; false at the end of the file or on a bad item
+  auto read = [&](const std::string& type, double& value) -> bool {
+    if(ascii) {
+      std::string token;
+      if(!(is >> token)) return false;
+      std::istringstream number(token);
+      return bool(number >> value);
+    }
+    const std::size_t bytes = ply_type_size(type);
+    unsigned char b[8];
+    if(bytes == 0 || !is.read(reinterpret_cast<char*>(b), std::streamsize(bytes))) return false;
+    if(big_endian) std::reverse(b, b + bytes);
+    const bool is_signed = type == "char" || type == "int8" || type == "short" || type == "int16" ||
+                           type == "int" || type == "int32";
+    if(type == "float" || type == "float32") {
+      float f;
+      std::memcpy(&f, b, 4);
+      value = f;
+    } else if(bytes == 8) {
+      std::memcpy(&value, b, 8);
+    } else {
+      std::uint64_t u = 0;
+      for(std::size_t k = 0; k < bytes; ++k) u |= std::uint64_t(b[k]) << (8 * k);
+      if(is_signed && (u >> (8 * bytes - 1))) value = double(std::int64_t(u) - (std::int64_t(1) << (8 * bytes)));
+      else value = double(u);
+    }
+    return true;
+  };
+  // CGAL's reader reads a list's size into an uninitialized variable: at the end of the
+  // file it resizes the list to whatever that held
+  auto truncated = [&]() {
+    throw std::invalid_argument("'" + fname + "' ends before the elements its PLY header declares (or holds an "
+                                "item that is not a number)");
+  };
+  double value, item;
+  for(const Ply_element& e : elements)
+    for(double row = 0; row < e.count; ++row)
+      for(const Ply_property& p : e.properties) {
+        if(!p.is_list) {
+          if(!read(p.item_type, value)) truncated();
+          continue;
+        }
+        if(!read(p.size_type, value)) truncated();
+        // a negative size too: CGAL reads "-1" into an unsigned size as 4294967295
+        if(!(value >= 0 && value <= double(size_of_file))) refuse(value);
+        for(double k = 0; k < value; ++k)
+          if(!read(p.item_type, item)) truncated();
+      }
+}
+
 /// refuses the headers CGAL 5.5's readers would act on blindly: a PLY "property" before
 /// any "element" (CGAL's PLY reader writes through an empty vector's back()), vertex
 /// coordinates of another type than float or double (it casts them to either), and element
@@ -136,22 +227,43 @@ inline void check_surface_file_header(const std::string& fname, std::istream& is
                                   " bytes can hold");
   };
   if(extension == ".ply") {
-    std::string line, element;
+    std::string line, element, format;
+    std::vector<Ply_element> elements;
     for(int n = 0; n < 100000 && std::getline(is, line); ++n) {
       std::istringstream words(line);
       std::string keyword;
       words >> keyword;
-      if(keyword == "end_header") return;
+      // as CGAL's reader: the format is the second word of the second line, whatever the first
+      if(n == 1) words >> format;
+      if(keyword == "end_header") {
+        check_ply_list_sizes(fname, is, format, elements, size_of_file);
+        return;
+      }
       if(keyword == "property") {
         if(element.empty())
           throw std::invalid_argument("the PLY header of '" + fname + "' has a property before any element");
-        // CGAL reads a vertex's x, y, z as float or double, whatever their declared type
+        // "property TYPE NAME" or "property list SIZE_TYPE ITEM_TYPE NAME"
         std::string type, name;
-        words >> type >> name;
+        Ply_property property;
+        words >> type;
+        if(type == "list") {
+          property.is_list = true;
+          words >> property.size_type >> property.item_type;
+        } else property.item_type = type;
+        words >> name;
+        // CGAL reads a vertex's x, y, z as float or double, whatever their declared type (a
+        // list of them fails its assertion, or without assertions reads through a null pointer)
         if((element == "vertex" || element == "vertices") && (name == "x" || name == "y" || name == "z") &&
            type != "float" && type != "float32" && type != "double" && type != "float64")
           throw std::invalid_argument("the PLY header of '" + fname + "' declares the vertex coordinate " + name +
                                       " as " + type + "; float or double is needed");
+        // CGAL's reader skips a property of a type it does not know (and a list of a size type
+        // that is not an integer)
+        const bool known = ply_type_size(property.item_type) != 0 &&
+                           (!property.is_list || (ply_type_size(property.size_type) != 0 &&
+                                                  property.size_type.find("float") == std::string::npos &&
+                                                  property.size_type != "double"));
+        if(known && !elements.empty()) elements.back().properties.push_back(property);
       }
       if(keyword == "element") {
         // CGAL reads the count into a std::size_t: a negative one would wrap around
@@ -160,7 +272,10 @@ inline void check_surface_file_header(const std::string& fname, std::istream& is
         else if(!std::isdigit(static_cast<unsigned char>(count[0])))
           throw std::invalid_argument("the PLY header of '" + fname + "' declares " + count + " " + element +
                                       " elements; a count is a whole number");
-        else too_many("more " + element + " elements", std::stod(count));
+        else {
+          too_many("more " + element + " elements", std::stod(count));
+          elements.push_back(Ply_element{std::stod(count), {}});
+        }
       }
     }
     // CGAL's reader, given no end of header, reads on into the data as header lines
@@ -170,11 +285,22 @@ inline void check_surface_file_header(const std::string& fname, std::istream& is
     // the keyword line (OFF, COFF, NOFF, 4OFF, ...; optional), comments, then the counts
     double counts[2] = {0, 0};
     int found = 0;
-    bool binary = false;
+    bool binary = false, keyword = true;
     while(found < 2 && is >> token) {
       if(token[0] == '#') {
         std::getline(is, token);
         continue;
+      }
+      if(keyword) {
+        // as CGAL's reader: the keyword is the letters and digits up to the first other
+        // character, which it skips; what follows it is the first count ("OFF\x0f8": 8)
+        keyword = false;
+        std::size_t k = 0;
+        while(k < token.size() && std::isalnum(static_cast<unsigned char>(token[k]))) ++k;
+        if(token.substr(0, k).find("OFF") != std::string::npos) {
+          if(k + 1 >= token.size()) continue;
+          token = token.substr(k + 1);
+        }
       }
       if(token == "BINARY") binary = true;
       if(token.find("OFF") != std::string::npos || token == "BINARY") continue;
@@ -255,6 +381,7 @@ double read_closed_surface(const std::string& fname, TriangleMesh& tm, bool* sel
     read = CGAL::IO::read_polygon_soup(fname, points, polygons, CGAL::parameters::verbose(false));
   } catch(const std::length_error&) { // CGAL sizes a face's vector by a count read from the file
   } catch(const std::bad_alloc&) {
+  } catch(const CGAL::Failure_exception&) { // a reader's own assertion on a header it did not expect
   }
   if(!read)
     throw std::invalid_argument("cannot read '" + fname + "' as a polygon mesh (OFF, OBJ, PLY, STL, ...)");

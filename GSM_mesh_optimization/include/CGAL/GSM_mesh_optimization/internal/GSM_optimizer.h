@@ -12,6 +12,7 @@
 #include <CGAL/GSM_mesh_optimization/internal/Sliver_polisher.h>
 #include <CGAL/GSM_mesh_optimization/internal/Energy_guided_flips.h>
 #include <CGAL/GSM_mesh_optimization/internal/Mesh_energy.h>
+#include <CGAL/GSM_mesh_optimization/internal/Stopping.h>
 #include <CGAL/GSM_mesh_optimization/internal/Vertex_smoother.h>
 #include <CGAL/GSM_mesh_optimization/mesh_quality_statistics.h>
 
@@ -77,7 +78,7 @@ struct GSM_options
   double boundary_distance = 0; // the least bound of the boundary-fidelity guard
   bool verbose = false;
   Shape_matching_energy energy = Shape_matching_energy::GSM;
-  std::function<void(const Round_report&)> visitor;
+  std::function<bool(const Round_report&)> visitor; // false: stop
 };
 
 template <class C3T3, class MeshDomain>
@@ -149,7 +150,7 @@ public:
       report.elapsed_time = timer.time();
       notify(report, flips_start - smoothing_start, report.elapsed_time - flips_start);
 
-      if(time_is_up(timer)) return TIME_LIMIT_REACHED;
+      if(time_is_up(timer)) return stop_code();
       const double decrease = (previous_mean - report.energy) / previous_mean;
       previous_mean = report.energy;
       if(report.number_of_moves == 0 && report.number_of_flips == 0) {
@@ -164,7 +165,7 @@ public:
       }
     }
     if(options_.sliver_bound > 0) polish((std::min)(round, options_.max_rounds), flips, sum, count, timer);
-    return time_is_up(timer) ? TIME_LIMIT_REACHED : result;
+    return time_is_up(timer) ? stop_code() : result;
   }
 
 private:
@@ -283,15 +284,22 @@ private:
                 << report.number_of_moves << " moves, " << report.number_of_flips << " flips, "
                 << report.number_of_splits << " splits, " << report.number_of_removals << " removals, " << report.elapsed_time << " s (smoothing "
                 << smoothing_time << " s, flips " << flip_time << " s)\n";
-    if(options_.visitor) options_.visitor(report);
+    if(options_.visitor && !options_.visitor(report)) stop_requested_ = true;
   }
 
   // the sliver bound, or the default one for the stop rule when there is no polishing
   double bound() const { return options_.sliver_bound > 0 ? options_.sliver_bound : default_bound; }
 
+  // the time limit is reached or the visitor asked to stop
   bool time_is_up(const CGAL::Real_timer& timer) const
   {
-    return options_.time_limit > 0 && timer.time() >= options_.time_limit;
+    return stop_requested_ || (options_.time_limit > 0 && timer.time() >= options_.time_limit);
+  }
+
+  // a visitor's stop is a round limit of the caller's
+  Mesh_optimization_return_code stop_code() const
+  {
+    return stop_requested_ ? MAX_ITERATION_NUMBER_REACHED : TIME_LIMIT_REACHED;
   }
 
   // Every movable vertex once, those with the largest Newton step first. The
@@ -468,6 +476,7 @@ private:
   static constexpr double min_relative_step = 1e-4;
 
   C3T3& c3t3_;
+  mutable bool stop_requested_ = false; // by the visitor
   GSM_options options_;
   Mesh_energy<C3T3> energy_;
   Smoother smoother_;

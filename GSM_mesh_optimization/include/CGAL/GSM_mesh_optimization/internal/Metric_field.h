@@ -69,10 +69,13 @@ public:
     const bool symmetric = finite && (M - M.transpose()).norm() <= 1e-9 * M.norm();
     Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig;
     if(symmetric) eig.computeDirect(M); // closed form: this runs for every energy evaluation
-    if(!symmetric || eig.info() != Eigen::Success || !(eig.eigenvalues().minCoeff() > 0)) {
+    // relative to the largest eigenvalue: a singular M's zero eigenvalue comes out of the
+    // closed form as a rounding error of either sign
+    if(!symmetric || eig.info() != Eigen::Success ||
+       !(eig.eigenvalues().minCoeff() > 1e-12 * eig.eigenvalues().maxCoeff())) {
       std::ostringstream os;
       os << "GSM: the metric at (" << x.transpose()
-         << ") is not a finite symmetric positive definite matrix:\n" << M;
+         << ") is not a finite symmetric positive definite matrix (singular, indefinite or not finite):\n" << M;
       throw std::invalid_argument(os.str());
     }
     return eig.eigenvectors() * eig.eigenvalues().cwiseSqrt().asDiagonal() *

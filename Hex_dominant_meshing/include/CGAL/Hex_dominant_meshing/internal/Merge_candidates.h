@@ -25,6 +25,8 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
+#include <functional>
 #include <cstddef>
 #include <functional>
 #include <vector>
@@ -270,13 +272,22 @@ public:
 
   /// the candidates of the kinds asked for, without duplicates, in a fixed order; with
   /// `owner`, only of the tets still free (owner no_index)
+  /// the candidates of the tets free in `owner` (all if null); once `must_stop()` (called from
+  /// several threads at once) returns true, the tets not yet searched are skipped and `*stopped`
+  /// is set
   std::vector<Merge_candidate> find(bool hexahedra, bool prisms, bool pyramids,
-                                    const std::vector<std::size_t>* owner = nullptr) const
+                                    const std::vector<std::size_t>* owner = nullptr,
+                                    const std::function<bool()>& must_stop = {}, bool* stopped = nullptr) const
   {
     const std::size_t n = mesh_.number_of_tets();
     owner_ = owner;
     std::vector<std::vector<Merge_candidate>> per_tet(n);
+    std::atomic<bool> cut(false);
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 64), [&](const tbb::blocked_range<std::size_t>& r) {
+      if(cut.load(std::memory_order_relaxed) || (must_stop && must_stop())) {
+        cut = true;
+        return;
+      }
       std::vector<std::size_t> pij, pik, pjk, pq, s;
       for(std::size_t t = r.begin(); t != r.end(); ++t) {
         if(!is_free(t)) continue;
@@ -305,6 +316,7 @@ public:
       for(std::size_t i = r.begin(); i != r.end(); ++i) all[i].quality = merging_quality(mesh_, all[i], B_);
     });
     all.erase(std::remove_if(all.begin(), all.end(), [this](const Merge_candidate& m) { return m.quality < bound_; }), all.end());
+    if(stopped && cut) *stopped = true;
     return all;
   }
 

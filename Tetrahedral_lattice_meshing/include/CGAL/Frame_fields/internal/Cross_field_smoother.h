@@ -95,21 +95,25 @@ public:
 
   /// Smooths `frames` (rotations) in place, with `c` their SH vectors, for at most
   /// `max_rounds` rounds of at most `iterations_per_round` L-BFGS iterations; stops
-  /// when a round lowers the energy by less than `tolerance` times it. Calls
-  /// `after_round(round, energy)` after each. Returns the energies: before the first
-  /// round, then after each.
+  /// when a round lowers the energy by less than `tolerance` times it, or when
+  /// `after_round(round, energy)`, called before the first round (round 0) and after each,
+  /// returns `false`. Once `interrupted()` returns true, the round under way ends at its best
+  /// point so far. Returns the energies: before the first round, then after each.
   std::vector<double> smooth(std::vector<Eigen::Matrix3d>& frames, std::vector<SH_vector>& c, int max_rounds,
                              double tolerance, int iterations_per_round,
-                             const std::function<void(int, double)>& after_round) const
+                             const std::function<bool(int, double)>& after_round,
+                             const std::function<bool()>& interrupted = {}) const
   {
     std::vector<double> energies{energy(c)};
     const Eigen::Index size = offset_.back();
+    if(after_round && !after_round(0, energies.back())) return energies;
     for(int round = 1; round <= max_rounds && energies.back() > 0; ++round) {
       const std::vector<Eigen::Matrix3d> start = frames;
       std::vector<SH_vector> trial(c.size());
       Eigen::VectorXd best_x = Eigen::VectorXd::Zero(size);
       double best_e = energies.back();
       auto f = [&](const Eigen::VectorXd& x, Eigen::VectorXd& grad) {
+        if(interrupted && interrupted()) throw std::runtime_error("interrupted"); // caught below
         const double e = energy_and_gradient(start, x, grad, trial);
         if(std::isfinite(e) && e < best_e) {
           best_e = e;
@@ -139,7 +143,7 @@ public:
         for_each_index(c.size(), [&](std::size_t v) { c[v] = L4_frames::instance().frame(frames[v]); });
       }
       energies.push_back((std::min)(e, before));
-      if(after_round) after_round(round, energies.back());
+      if(after_round && !after_round(round, energies.back())) break;
       if(before - energies.back() <= tolerance * before) break;
     }
     return energies;

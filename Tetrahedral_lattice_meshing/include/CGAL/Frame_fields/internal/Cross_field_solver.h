@@ -98,10 +98,13 @@ public:
   void set_iterations_per_round(int k) { iterations_per_round_ = k; }
 
   /// At most `max_rounds` smoothing rounds, stopped when one lowers the energy by
-  /// less than `tolerance` times it; `after_round(round, energy)` after each.
+  /// less than `tolerance` times it or when `after_round(round, energy)`, called before the
+  /// first (round 0) and after each, returns `false`; a round under way ends early once
+  /// `interrupted()` returns true.
   /// \throws std::runtime_error if neither CG nor the LDLT factorization solves the system
   Cross_field_solution solve(int max_rounds, double tolerance, bool verbose,
-                             const std::function<void(int, double)>& after_round = {}) const
+                             const std::function<bool(int, double)>& after_round = {},
+                             const std::function<bool()>& interrupted = {}) const
   {
     const L4_frames& frames = L4_frames::instance();
     const std::size_t n = xyz_.size();
@@ -114,9 +117,10 @@ public:
     const Cross_field_smoother smoother(neighbours_, axis_);
     s.round_energies = smoother.smooth(s.vertex_frames, s.coefficients, max_rounds, tolerance, iterations_per_round_,
                                        [&](int round, double e) {
-                                         if(verbose) std::cerr << "  smoothing round " << round << ": energy " << e << "\n";
-                                         if(after_round) after_round(round, e);
-                                       });
+                                         if(verbose && round > 0)
+                                           std::cerr << "  smoothing round " << round << ": energy " << e << "\n";
+                                         return !after_round || after_round(round, e);
+                                       }, interrupted);
     s.smoothness_energy = s.round_energies.back();
     s.edges = edges_;
     // one frame per cell, interpolated at its centroid, for the matchings

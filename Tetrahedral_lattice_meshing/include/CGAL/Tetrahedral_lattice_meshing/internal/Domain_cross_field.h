@@ -24,11 +24,14 @@ namespace internal {
  * The cross field of `domain` (unit frames: rotations), on a mesh of edges
  * about `size` long, with an axis on the normal of the boundary and along its
  * feature curves. It does not depend on the process's history (seeded mesher).
+ * `time_limit` (seconds from the call, 0: none) stops the field's smoothing rounds;
+ * the mesh and the least-squares solve always run.
  */
 template <class MeshDomain>
 Frame_fields::Discrete_frame_field_3<typename Kernel_traits<typename MeshDomain::R::Point_3>::Kernel>
-domain_cross_field(const MeshDomain& domain, double size)
+domain_cross_field(const MeshDomain& domain, double size, double time_limit = 0)
 {
+  const GSM_mesh_optimization::internal::Time_limit limit(time_limit);
   namespace P = CGAL::parameters;
   typedef typename Sampling_complex<MeshDomain>::type C3T3;
   typedef CGAL::Mesh_criteria_3<typename C3T3::Triangulation> Criteria;
@@ -43,7 +46,7 @@ domain_cross_field(const MeshDomain& domain, double size)
   }
   if(c3t3.number_of_cells_in_complex() == 0)
     throw std::invalid_argument("the domain is empty: no cell to carry a cross field");
-  return Frame_fields::generate_cross_field_3(c3t3).field;
+  return Frame_fields::generate_cross_field_3(c3t3, P::maximum_running_time(limit.remaining())).field;
 }
 
 } // namespace internal

@@ -41,7 +41,7 @@ struct Lattice_options
   double time_limit = 0;  // seconds, 0: none
   unsigned seed = 0;
   bool verbose = false;
-  std::function<void(const Lattice_round_report&)> visitor;
+  std::function<bool(const Lattice_round_report&)> visitor; // false: stop
 };
 
 /// the volume of the domain measured in the imagined space, \f$ \int |\det B| \f$, over the boundary's cells
@@ -174,23 +174,27 @@ public:
       }
       const int max_rounds = o_.max_rounds >= 0 ? o_.max_rounds : (level == o_.levels ? 16 : 8);
       out_.number_of_rounds += optimize_level(*system_, level, max_rounds, level > 0);
-      if(time_up()) {
-        out_.time_limit_reached = true;
+      if(must_stop()) {
+        record_stop();
         break;
       }
     }
     return energy_per_particle();
   }
 
-  bool time_limit_reached() const { return out_.time_limit_reached; }
+  /// the time limit was reached or the visitor asked to stop
+  bool stopped() const { return out_.time_limit_reached || out_.stopped_by_visitor; }
+  bool stopped_by_visitor() const { return out_.stopped_by_visitor; }
+  /// the visitor asked another run to stop: this one stops too (`finish()` runs no last round)
+  void request_stop() { stop_requested_ = true; }
   /// the rounds run so far
   int number_of_rounds() const { return out_.number_of_rounds; }
 
   /// the last round (unless the time is up) and the particles
   Lattice_particles_3<Point_3> finish()
   {
-    if(!out_.time_limit_reached) {
-      if(time_up()) out_.time_limit_reached = true;
+    if(!stopped()) {
+      if(must_stop()) record_stop();
       else {
         lattice_round(*system_, 0, last_round_number_, 1e-4, 100, 0, 0); // to convergence
         ++out_.number_of_rounds;
@@ -213,7 +217,12 @@ public:
   }
 
 private:
-  bool time_up() const { return o_.time_limit > 0 && timer_.time() > o_.time_limit; }
+  bool must_stop() const { return stop_requested_ || (o_.time_limit > 0 && timer_.time() > o_.time_limit); }
+  void record_stop()
+  {
+    if(stop_requested_) out_.stopped_by_visitor = true;
+    else out_.time_limit_reached = true;
+  }
 
   // N particles uniformly in the imagined space: a sampling cell chosen by its imagined
   // volume, a uniform point in it; the corners as fixed particles.
@@ -297,7 +306,7 @@ private:
       std::cerr << "  lattice level " << level << " round " << r << ": " << s.size() << " particles (-" << deleted
                 << " +" << inserted << "), energy/particle " << rep.energy << ", " << res.iterations
                 << " L-BFGS its, " << rep.time << " s\n";
-    if(o_.visitor) o_.visitor(rep);
+    if(o_.visitor && !o_.visitor(rep)) stop_requested_ = true;
   }
 
   // Alg. 5 at one edge length, with its last round or not (then `finish()` runs it); returns
@@ -306,7 +315,7 @@ private:
   {
     int rounds = 1;
     lattice_round(s, level, 0, 1e-2, 13, 0, 0);
-    for(int r = 0; r < max_rounds && !time_up(); ++r) {
+    for(int r = 0; r < max_rounds && !must_stop(); ++r) {
       const std::size_t deleted = delete_particles(s);
       const std::size_t inserted = insert_particles(s);
       if(deleted + inserted == 0) break;
@@ -314,7 +323,7 @@ private:
       ++rounds;
     }
     last_round_number_ = rounds;
-    if(last_round && !time_up()) {
+    if(last_round && !must_stop()) {
       lattice_round(s, level, rounds, 1e-4, 100, 0, 0); // the last round, to convergence
       ++rounds;
     }
@@ -330,6 +339,7 @@ private:
   std::unique_ptr<System> system_;
   Lattice_particles_3<Point_3> out_; // the counters so far
   int last_round_number_ = 0;
+  bool stop_requested_ = false; // by the visitor
 };
 
 } // namespace internal

@@ -1,0 +1,56 @@
+// Copyright (c) 2026 VVM contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Stopping cleanly, for every entry point of the three packages: one
+// `maximum_running_time` counted from the call's start and shared by its
+// stages, and visitors that may ask to stop by returning `false`.
+
+#ifndef CGAL_GSM_MESH_OPTIMIZATION_INTERNAL_STOPPING_H
+#define CGAL_GSM_MESH_OPTIMIZATION_INTERNAL_STOPPING_H
+
+#include <CGAL/Real_timer.h>
+
+#include <algorithm>
+#include <type_traits>
+#include <utility>
+
+namespace CGAL {
+namespace GSM_mesh_optimization {
+namespace internal {
+
+/// the time limit of one call (`maximum_running_time`, 0: none), started at construction:
+/// each stage asks `is_reached()` between its steps and hands `remaining()` to the calls it makes
+class Time_limit
+{
+public:
+  explicit Time_limit(double seconds = 0) : limit_(seconds) { timer_.start(); }
+
+  bool is_set() const { return limit_ > 0; }
+  double elapsed() const { return timer_.time(); }
+  bool is_reached() const { return limit_ > 0 && timer_.time() >= limit_; }
+  /// the time left, as a `maximum_running_time` for a nested call: 0 (none) without a limit,
+  /// else positive, so that a call given it once the limit is reached stops at once
+  double remaining() const { return limit_ > 0 ? (std::max)(limit_ - timer_.time(), 1e-9) : 0.; }
+
+private:
+  CGAL::Real_timer timer_;
+  double limit_;
+};
+
+/// calls `visitor(args...)`; returns `false` if the visitor returns a `bool` and it is `false`
+/// (it asks the algorithm to stop), `true` otherwise
+template <class Visitor, class... Args>
+bool visit(const Visitor& visitor, Args&&... args)
+{
+  if constexpr(std::is_void<decltype(visitor(std::forward<Args>(args)...))>::value) {
+    visitor(std::forward<Args>(args)...);
+    return true;
+  } else
+    return bool(visitor(std::forward<Args>(args)...));
+}
+
+} // namespace internal
+} // namespace GSM_mesh_optimization
+} // namespace CGAL
+
+#endif // CGAL_GSM_MESH_OPTIMIZATION_INTERNAL_STOPPING_H
