@@ -40,6 +40,7 @@
 #include <CGAL/tets_to_hex_dominant.h>
 
 #include <cmath>
+#include <cstring>
 #include <fstream>
 #include <functional>
 #include <iomanip>
@@ -313,6 +314,13 @@ void lattice_requests(const std::string& entry, const Call& call)
   refused(entry, "empty domain", {"empty"}, [&] { call(empty_domain(), identity, TLM::parameters::number_of_particles(std::size_t(500))); });
   refused(entry, "number_of_particles 0", {"number of particles"}, [&] { call(domain, identity, TLM::parameters::number_of_particles(std::size_t(0))); });
   refused(entry, "number_of_particles 10^15 (memory)", {"particles"}, [&] { call(domain, identity, TLM::parameters::number_of_particles(std::size_t(1e15))); });
+  // a count allowed in general that this machine's memory cannot hold: refused before any work
+  const double over_memory = 1.5 * TLM::internal::physical_memory() / TLM::bytes_per_particle;
+  if(over_memory > 0 && over_memory <= TLM::maximum_number_of_particles)
+    refused(entry, "number_of_particles over the machine's memory", {"number_of_particles", "more than this machine's", "GB"},
+            [&] { call(domain, identity, TLM::parameters::number_of_particles(std::size_t(over_memory))); });
+  else
+    std::cout << entry << ": this machine holds the largest particle count; no memory refusal to test\n";
   refused(entry, "edge_length 0", {"edge length"}, [&] { call(domain, identity, TLM::parameters::edge_length(0.)); });
   refused(entry, "edge_length -1", {"edge length"}, [&] { call(domain, identity, TLM::parameters::edge_length(-1.)); });
   refused(entry, "edge_length NaN", {"edge length"}, [&] { call(domain, identity, TLM::parameters::edge_length(nan)); });
@@ -446,6 +454,24 @@ void test_files()
                                               "property float y\nproperty float z\nelement face 4\n"
                                               "property list uint int vertex_indices\nend_header\n0 0 0\n1 0 0\n"
                                               "0 1 0\n0 0 1\n4294967295 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n")));
+  refused(surfaces, "OFF header of 10^9 vertices", {"huge.off", "more vertices"},
+          read_surface(write_file("huge.off", "OFF\n1000000000 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n")));
+  {
+    // a binary OFF tetrahedron whose first face declares 2^31 - 1 vertices (big-endian int32s)
+    std::string binary = "OFF BINARY\n";
+    auto put = [&binary](std::uint32_t word) {
+      for(int shift = 24; shift >= 0; shift -= 8) binary += char((word >> shift) & 0xff);
+    };
+    for(std::uint32_t count : {4u, 4u, 0u}) put(count);
+    for(float c : {0.f, 0.f, 0.f, 1.f, 0.f, 0.f, 0.f, 1.f, 0.f, 0.f, 0.f, 1.f}) {
+      std::uint32_t word;
+      std::memcpy(&word, &c, 4);
+      put(word);
+    }
+    for(std::uint32_t index : {0x7fffffffu, 0u, 2u, 1u}) put(index);
+    refused(surfaces, "binary OFF face of 2^31 - 1 vertices", {"binary.off", "2147483647"},
+            read_surface(write_file("binary.off", binary)));
+  }
   refused(surfaces, "flat closed surface", {"flat.off"},
           read_surface(write_file("flat.off", "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n")));
 

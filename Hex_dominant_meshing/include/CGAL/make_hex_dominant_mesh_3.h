@@ -89,6 +89,7 @@ make_hex_dominant_mesh(const MeshDomain& domain, const FrameField& field,
     return r.time_limit_reached;
   };
 
+  request.seconds_kept_per_particle = TLM_internal::connection_seconds_per_particle;
   auto pd = TLM_internal::lattice_particles(domain, field, request);
   r.number_of_particles = pd.particles.size();
   r.edge_length = pd.particles.edge_length;

@@ -108,6 +108,9 @@ struct Lattice_request
   double number_of_particles = 0;
   int threads = 0;
   Lattice_options options;
+  /// of the time limit, kept per particle for the stages after the particles that always run
+  /// (their connection into tets): the particle rounds stop that much earlier
+  double seconds_kept_per_particle = 0;
 };
 
 template <class NamedParameters>
@@ -230,9 +233,10 @@ Particles_in_domain<MeshDomain> lattice_particles(const MeshDomain& domain, cons
     fail("the edge length " + readable(l) + " is larger than the domain (under one lattice cell in it)");
   // n: the lattice's estimated count
   typedef Lattice_optimizer<FrameField, Domain_boundary<MeshDomain, K>, Point_3> Optimizer;
-  // each optimizer gets the time left
+  // each optimizer gets the time left, less what the stages after it keep
+  const double reserve = r.seconds_kept_per_particle * n;
   auto optimizer = [&](Lattice_options o) {
-    o.time_limit = time_limit.remaining();
+    if(time_limit.is_set()) o.time_limit = (std::max)(time_limit.remaining() - reserve, 1e-9);
     return std::make_unique<Optimizer>(r.lattice, field, *out.boundary, l, o);
   };
   if(r.options.levels < 0 && r.lattice.type == Lattice_type::CUBIC)

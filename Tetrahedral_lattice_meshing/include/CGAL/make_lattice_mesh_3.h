@@ -175,6 +175,11 @@ Mesh_optimization_return_code optimize_lattice_mesh(C3T3& c3t3, const MeshDomain
   return code;
 }
 
+/// the time the particles' connection into tets (and its metric flips) takes per particle, on
+/// one core, rounded up from `benchmark/time_limits`: under a time limit, the particle rounds
+/// keep it for the connection, which always runs
+constexpr double connection_seconds_per_particle = 1e-4;
+
 /// the particles connected into `c3t3` (`connect_particles()`); free particles the complex
 /// leaves on its boundary (under a hole of the boundary layer, 0.3 to 0.5 l* deep) would make
 /// tents off the surface: they go onto the surface and the particles are connected again
@@ -247,7 +252,9 @@ C3T3 make_lattice_mesh(const MeshDomain& domain, const FrameField& field, const 
   r = Lattice_mesh_report();
   const GSM_mesh_optimization::internal::Time_limit time_limit(request.options.time_limit);
 
-  auto pd = lattice_particles(domain, field, request);
+  Lattice_request particle_request = request;
+  particle_request.seconds_kept_per_particle = connection_seconds_per_particle;
+  auto pd = lattice_particles(domain, field, particle_request);
   r.number_of_particles = pd.particles.size();
   r.edge_length = pd.particles.edge_length;
   r.particle_time = pd.particles.time;

@@ -111,7 +111,7 @@ Boundary_alignment_statistics boundary_alignment_statistics(const Generated_cros
   const std::size_t n = g.boundary_facets.size();
   s.facet_errors.resize(n);
   s.facet_areas.resize(n);
-  internal::for_each_index(n, [&](std::size_t i) {
+  internal::parallel_for_each_index(n, [&](std::size_t i) {
     const auto& f = g.boundary_facets[i];
     const Eigen::Vector3d N = (xyz(f[1]) - xyz(f[0])).cross(xyz(f[2]) - xyz(f[0]));
     s.facet_areas[i] = 0.5 * N.norm();

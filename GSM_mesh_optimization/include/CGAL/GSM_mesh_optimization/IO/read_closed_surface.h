@@ -7,6 +7,8 @@
 #ifndef CGAL_GSM_MESH_OPTIMIZATION_IO_READ_CLOSED_SURFACE_H
 #define CGAL_GSM_MESH_OPTIMIZATION_IO_READ_CLOSED_SURFACE_H
 
+#include <CGAL/IO/OFF/File_header_OFF.h>
+#include <CGAL/IO/io.h>
 #include <CGAL/IO/polygon_soup_io.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
@@ -29,6 +31,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace CGAL {
@@ -146,6 +149,20 @@ inline std::size_t ply_type_size(const std::string& t)
   return 0;
 }
 
+/// the next number of an ASCII PLY body as CGAL 5.5's reader reads a `T`: extracted as a
+/// `Read` from the stream (floating point through `CGAL::IO::iformat()`), then cast to `T`
+template <class T, class Read>
+bool read_ply_ascii(std::istream& is, double& value)
+{
+  Read r;
+  if constexpr(std::is_floating_point<Read>::value) {
+    if(!(is >> CGAL::IO::iformat(r))) return false;
+  } else if(!(is >> r))
+    return false;
+  value = double(static_cast<T>(r));
+  return true;
+}
+
 /// walks the body of a PLY file after its header and refuses a list (a face's vertex indices)
 /// whose size is larger than the file can hold: CGAL 5.5's reader resizes a vector to the
 /// size it reads before reading the items, so 4294967295 in a `uint` size would allocate
@@ -165,10 +182,17 @@ inline void check_ply_list_sizes(const std::string& fname, std::istream& is, con
   // the next scalar of type `type`, as a double; false at the end of the file or on a bad item
   auto read = [&](const std::string& type, double& value) -> bool {
     if(ascii) {
-      std::string token;
-      if(!(is >> token)) return false;
-      std::istringstream number(token);
-      return bool(number >> value);
+      // as CGAL's reader: one stream, each number read as its C++ type ("0-1" is two uint
+      // numbers, 0 and 4294967295); chars through shorts, then cast
+      if(type == "char" || type == "int8") return read_ply_ascii<signed char, short>(is, value);
+      if(type == "uchar" || type == "uint8") return read_ply_ascii<unsigned char, unsigned short>(is, value);
+      if(type == "short" || type == "int16") return read_ply_ascii<short, short>(is, value);
+      if(type == "ushort" || type == "uint16") return read_ply_ascii<unsigned short, unsigned short>(is, value);
+      if(type == "int" || type == "int32") return read_ply_ascii<int, int>(is, value);
+      if(type == "uint" || type == "uint32") return read_ply_ascii<unsigned int, unsigned int>(is, value);
+      if(type == "float" || type == "float32") return read_ply_ascii<float, float>(is, value);
+      if(type == "double" || type == "float64") return read_ply_ascii<double, double>(is, value);
+      return false;
     }
     const std::size_t bytes = ply_type_size(type);
     unsigned char b[8];
@@ -212,6 +236,36 @@ inline void check_ply_list_sizes(const std::string& fname, std::istream& is, con
       }
 }
 
+/// the faces of a binary OFF body after its vertices, as CGAL 5.5's reader reads them: each
+/// a big-endian int32 size, by which the reader resizes a vector, then that many indices; a
+/// size that is negative, larger than the rest of the file can hold, or cut by its end is
+/// refused
+inline void check_binary_off_faces(const std::string& fname, std::istream& is, const CGAL::File_header_OFF& header,
+                                   std::uintmax_t size)
+{
+  const std::uintmax_t w = header.is_homogeneous() ? 1 : 0;
+  const std::uintmax_t vertex_bytes =
+      4 * ((3 + w) + (header.has_normals() ? 3 + w : 0) + (header.has_textures() ? 2 + w : 0));
+  const std::streamoff start = is.tellg();
+  if(start < 0) return;
+  // the counts are at most the file's size (checked): no overflow
+  const std::uintmax_t faces = std::uintmax_t(start) + header.size_of_vertices() * vertex_bytes;
+  if(faces > size) return; // the reader fails in the vertices
+  is.seekg(std::streamoff(faces));
+  for(std::size_t f = 0; f < header.size_of_facets(); ++f) {
+    // at the end of the file, CGAL's reader takes the size from an uninitialized int32
+    unsigned char b[4];
+    if(!is.read(reinterpret_cast<char*>(b), 4))
+      throw std::invalid_argument("'" + fname + "' ends before the faces its OFF header declares");
+    const std::int32_t n = std::int32_t(std::uint32_t(b[0]) << 24 | std::uint32_t(b[1]) << 16 |
+                                        std::uint32_t(b[2]) << 8 | std::uint32_t(b[3]));
+    const std::uintmax_t left = size - std::uintmax_t(is.tellg());
+    if(n < 0 || std::uintmax_t(n) > left / 4)
+      throw std::invalid_argument("'" + fname + "' has a face of " + std::to_string(n) + " vertices");
+    is.seekg(4 * std::streamoff(n), std::ios::cur);
+  }
+}
+
 /// refuses the headers CGAL 5.5's readers would act on blindly: a PLY "property" before
 /// any "element" (CGAL's PLY reader writes through an empty vector's back()), vertex
 /// coordinates of another type than float or double (it casts them to either), and element
@@ -233,8 +287,12 @@ inline void check_surface_file_header(const std::string& fname, std::istream& is
       std::istringstream words(line);
       std::string keyword;
       words >> keyword;
-      // as CGAL's reader: the format is the second word of the second line, whatever the first
-      if(n == 1) words >> format;
+      // as CGAL's reader: the second line is the format line, whatever its first word, and the
+      // format is its second word
+      if(n == 1) {
+        words >> format;
+        continue;
+      }
       if(keyword == "end_header") {
         check_ply_list_sizes(fname, is, format, elements, size_of_file);
         return;
@@ -281,49 +339,27 @@ inline void check_surface_file_header(const std::string& fname, std::istream& is
     // CGAL's reader, given no end of header, reads on into the data as header lines
     throw std::invalid_argument("the PLY header of '" + fname + "' has no end_header line");
   } else if(extension == ".off") {
-    std::string token;
-    // the keyword line (OFF, COFF, NOFF, 4OFF, ...; optional), comments, then the counts
-    double counts[2] = {0, 0};
-    int found = 0;
-    bool binary = false, keyword = true;
-    while(found < 2 && is >> token) {
-      if(token[0] == '#') {
-        std::getline(is, token);
-        continue;
-      }
-      if(keyword) {
-        // as CGAL's reader: the keyword is the letters and digits up to the first other
-        // character, which it skips; what follows it is the first count ("OFF\x0f8": 8)
-        keyword = false;
-        std::size_t k = 0;
-        while(k < token.size() && std::isalnum(static_cast<unsigned char>(token[k]))) ++k;
-        if(token.substr(0, k).find("OFF") != std::string::npos) {
-          if(k + 1 >= token.size()) continue;
-          token = token.substr(k + 1);
-        }
-      }
-      if(token == "BINARY") binary = true;
-      if(token.find("OFF") != std::string::npos || token == "BINARY") continue;
-      std::istringstream number(token);
-      double value;
-      if(!(number >> value)) return; // CGAL's reader refuses it
-      counts[found++] = value;
+    // the header as CGAL's reader reads it (keyword, comments, counts; binary or text): the
+    // reader resizes its vectors to the counts
+    CGAL::File_header_OFF header(false);
+    is >> header;
+    if(!is) return; // CGAL's reader refuses it
+    too_many("more vertices", double(header.size_of_vertices()));
+    too_many("more faces", double(header.size_of_facets()));
+    if(header.binary()) {
+      check_binary_off_faces(fname, is, header, size_of_file);
+      return;
     }
-    for(double count : counts)
-      if(count < 0 || count != std::floor(count))
-        throw std::invalid_argument("the OFF header of '" + fname + "' declares a negative or fractional vertex or face "
-                                    "count; a count is a whole number");
-    too_many("more vertices", counts[0]);
-    too_many("more faces", counts[1]);
-    if(binary) return;
     // each face line starts with its number of vertices, by which CGAL sizes a vector: after
     // the rest of the counts line and the vertex lines (blank and comment lines skipped)
     std::string line;
     std::getline(is, line);
-    for(double n = 0; n < counts[0] + counts[1] && std::getline(is, line);) {
+    const double vertices = double(header.size_of_vertices()), lines = vertices + double(header.size_of_facets());
+    for(double n = 0; n < lines && std::getline(is, line);) {
       std::istringstream words(line);
+      std::string token;
       if(!(words >> token) || token[0] == '#') continue;
-      if(n++ < counts[0]) continue;
+      if(n++ < vertices) continue;
       std::istringstream number(token);
       double size;
       if(number >> size && !(size >= 0 && size <= double(size_of_file)))

@@ -9,6 +9,7 @@
 #ifndef CGAL_GSM_MESH_OPTIMIZATION_INTERNAL_GSM_OPTIMIZER_H
 #define CGAL_GSM_MESH_OPTIMIZATION_INTERNAL_GSM_OPTIMIZER_H
 
+#include <CGAL/GSM_mesh_optimization/internal/Parallel_for.h>
 #include <CGAL/GSM_mesh_optimization/internal/Sliver_polisher.h>
 #include <CGAL/GSM_mesh_optimization/internal/Energy_guided_flips.h>
 #include <CGAL/GSM_mesh_optimization/internal/Mesh_energy.h>
@@ -25,8 +26,6 @@
 
 #include <boost/range/iterator_range.hpp>
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <array>
@@ -311,7 +310,7 @@ private:
     Stars stars(c3t3_.triangulation());
     const std::size_t n = stars.vertices.size();
     std::vector<double> step(n, 0.);
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n), [&](const tbb::blocked_range<std::size_t>& range) {
+    parallel_for_ranges(n, 1, [&](const Index_range& range) {
       Ring ring;
       for(std::size_t r = range.begin(); r != range.end(); ++r) {
         const std::size_t i = stars.along_curve[r];
@@ -330,7 +329,7 @@ private:
 
     // what each move reads, once: the batches below scan the deferred vertices again and again
     std::vector<std::vector<std::size_t>> reads(n);
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n), [&](const tbb::blocked_range<std::size_t>& range) {
+    parallel_for_ranges(n, 1, [&](const Index_range& range) {
       for(std::size_t r = range.begin(); r != range.end(); ++r) {
         const std::size_t i = stars.along_curve[r];
         if(step[i] > 0) stars.reads(i, reads[i]);
@@ -364,8 +363,8 @@ private:
       std::iota(visit.begin(), visit.end(), std::size_t(0));
       std::sort(visit.begin(), visit.end(),
                 [&](std::size_t a, std::size_t b) { return stars.rank[batch[a]] < stars.rank[batch[b]]; });
-      tbb::parallel_for(tbb::blocked_range<std::size_t>(0, batch.size(), 16),
-                        [&](const tbb::blocked_range<std::size_t>& range) {
+      parallel_for_ranges(batch.size(), 16,
+                        [&](const Index_range& range) {
         Ring ring;
         for(std::size_t r = range.begin(); r != range.end(); ++r) {
           const std::size_t k = visit[r];

@@ -8,6 +8,7 @@
 #ifndef CGAL_GSM_MESH_OPTIMIZATION_INTERNAL_MESH_ENERGY_H
 #define CGAL_GSM_MESH_OPTIMIZATION_INTERNAL_MESH_ENERGY_H
 
+#include <CGAL/GSM_mesh_optimization/internal/Parallel_for.h>
 #include <CGAL/GSM_mesh_optimization/internal/Vertex_sizes.h>
 #include <CGAL/GSM_mesh_optimization/internal/Metric_field.h>
 #include <CGAL/GSM_mesh_optimization/shape_matching_energy.h>
@@ -17,8 +18,6 @@
 
 #include <Eigen/Core>
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <array>
@@ -255,8 +254,8 @@ public:
   static auto per_cell(const std::vector<Cell_handle>& cells, const F& f)
   {
     std::vector<std::decay_t<decltype(f(cells.front()))>> out(cells.size());
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, cells.size(), 1024),
-                      [&](const tbb::blocked_range<std::size_t>& r) {
+    parallel_for_ranges(cells.size(), 1024,
+                      [&](const Index_range& r) {
       for(std::size_t i = r.begin(); i != r.end(); ++i) out[i] = f(cells[i]);
     });
     return out;

@@ -14,12 +14,11 @@
 #ifndef CGAL_HEX_DOMINANT_MESHING_INTERNAL_MERGE_CANDIDATES_H
 #define CGAL_HEX_DOMINANT_MESHING_INTERNAL_MERGE_CANDIDATES_H
 
+#include <CGAL/GSM_mesh_optimization/internal/Parallel_for.h>
 #include <CGAL/Hex_dominant_mesh_3.h>
 #include <CGAL/Hex_dominant_meshing/cell_quality.h>
 #include <CGAL/Hex_dominant_meshing/internal/Tetrahedral_adjacency.h>
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
 
 #include <Eigen/Core>
 
@@ -34,6 +33,9 @@
 namespace CGAL {
 namespace Hex_dominant_meshing {
 namespace internal {
+
+using GSM_mesh_optimization::internal::Index_range;
+using GSM_mesh_optimization::internal::parallel_for_ranges;
 
 /// the most tets a cell is made of (a hexahedron of 7)
 constexpr int max_tets_in_cell = 7;
@@ -260,7 +262,7 @@ public:
   {
     // the frame inverse at each tet's centroid: what prunes the guesses made from it
     tet_B_.assign(B ? mesh.number_of_tets() : 0, Eigen::Matrix3d::Identity());
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, tet_B_.size(), 256), [&](const tbb::blocked_range<std::size_t>& r) {
+    parallel_for_ranges(tet_B_.size(), 256, [&](const Index_range& r) {
       for(std::size_t t = r.begin(); t != r.end(); ++t) {
         Eigen::Vector3d c = Eigen::Vector3d::Zero();
         for(std::size_t v : mesh.tets[t]) c += mesh.points[v];
@@ -283,7 +285,7 @@ public:
     owner_ = owner;
     std::vector<std::vector<Merge_candidate>> per_tet(n);
     std::atomic<bool> cut(false);
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 64), [&](const tbb::blocked_range<std::size_t>& r) {
+    parallel_for_ranges(n, 64, [&](const Index_range& r) {
       if(cut.load(std::memory_order_relaxed) || (must_stop && must_stop())) {
         cut = true;
         return;
@@ -312,7 +314,7 @@ public:
     all.erase(std::unique(all.begin(), all.end(),
                           [](const Merge_candidate& a, const Merge_candidate& b) { return a.same_cell(b); }),
               all.end());
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, all.size(), 256), [&](const tbb::blocked_range<std::size_t>& r) {
+    parallel_for_ranges(all.size(), 256, [&](const Index_range& r) {
       for(std::size_t i = r.begin(); i != r.end(); ++i) all[i].quality = merging_quality(mesh_, all[i], B_);
     });
     all.erase(std::remove_if(all.begin(), all.end(), [this](const Merge_candidate& m) { return m.quality < bound_; }), all.end());

@@ -17,6 +17,7 @@
 #ifndef CGAL_FRAME_FIELDS_INTERNAL_CROSS_FIELD_SMOOTHER_H
 #define CGAL_FRAME_FIELDS_INTERNAL_CROSS_FIELD_SMOOTHER_H
 
+#include <CGAL/GSM_mesh_optimization/internal/Parallel_for.h>
 #include <CGAL/Frame_fields/internal/L4_spherical_harmonics.h>
 
 #include <Eigen/Core>
@@ -25,8 +26,6 @@
 #include <LBFGS.h>
 
 #ifdef CGAL_LINKED_WITH_TBB
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
 #endif
 
 #include <cmath>
@@ -39,19 +38,7 @@ namespace CGAL {
 namespace Frame_fields {
 namespace internal {
 
-// f(i) for i in [0, n), in parallel when TBB is there (each i independent)
-template <class F>
-void for_each_index(std::size_t n, const F& f)
-{
-#ifdef CGAL_LINKED_WITH_TBB
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 256),
-                    [&](const tbb::blocked_range<std::size_t>& r) {
-                      for(std::size_t i = r.begin(); i != r.end(); ++i) f(i);
-                    });
-#else
-  for(std::size_t i = 0; i < n; ++i) f(i);
-#endif
-}
+using GSM_mesh_optimization::internal::parallel_for_each_index;
 
 /// the left Jacobian of SO(3): exp([w + d]) = exp([J_l(w) d]) exp([w]) to first order in d
 inline Eigen::Matrix3d so3_left_jacobian(const Eigen::Vector3d& w)
@@ -87,7 +74,7 @@ public:
   double energy(const std::vector<SH_vector>& c) const
   {
     std::vector<double> e(c.size());
-    for_each_index(c.size(), [&](std::size_t v) { e[v] = vertex_energy(c, v); });
+    parallel_for_each_index(c.size(), [&](std::size_t v) { e[v] = vertex_energy(c, v); });
     double sum = 0;
     for(double x : e) sum += x; // in index order: the same sum for any thread count
     return 0.5 * sum;
@@ -133,14 +120,14 @@ public:
       } catch(const std::runtime_error&) { // a line search that cannot progress: keep the best point
       } catch(const std::logic_error&) {
       }
-      for_each_index(c.size(), [&](std::size_t v) {
+      parallel_for_each_index(c.size(), [&](std::size_t v) {
         frames[v] = rotation_of(v, start[v], best_x);
         c[v] = L4_frames::instance().frame(frames[v]);
       });
       const double before = energies.back(), e = energy(c);
       if(e > before) { // round-off only (best_e < before): keep the frames of the round before
         frames = start;
-        for_each_index(c.size(), [&](std::size_t v) { c[v] = L4_frames::instance().frame(frames[v]); });
+        parallel_for_each_index(c.size(), [&](std::size_t v) { c[v] = L4_frames::instance().frame(frames[v]); });
       }
       energies.push_back((std::min)(e, before));
       if(after_round && !after_round(round, energies.back())) break;
@@ -159,10 +146,10 @@ public:
   {
     const std::size_t n = start.size();
     c.resize(n);
-    for_each_index(n, [&](std::size_t v) { c[v] = L4_frames::instance().frame(rotation_of(v, start[v], x)); });
+    parallel_for_each_index(n, [&](std::size_t v) { c[v] = L4_frames::instance().frame(rotation_of(v, start[v], x)); });
     grad.resize(offset_.back());
     std::vector<double> e(n);
-    for_each_index(n, [&](std::size_t v) {
+    parallel_for_each_index(n, [&](std::size_t v) {
       e[v] = vertex_energy(c, v);
       SH_vector d = SH_vector::Zero(); // dE/dc_v = 2 sum over neighbours (c_v - c_w)
       for(std::size_t w : neighbours_[v]) d += c[v] - c[w];

@@ -112,8 +112,8 @@ public:
     std::vector<SH_vector> c = least_squares(verbose, s);
     s.vertex_frames.resize(n);
     s.coefficients.resize(n);
-    for_each_index(n, [&](std::size_t v) { s.vertex_frames[v] = nearest_frame(v, c[v]); });
-    for_each_index(n, [&](std::size_t v) { s.coefficients[v] = frames.frame(s.vertex_frames[v]); });
+    parallel_for_each_index(n, [&](std::size_t v) { s.vertex_frames[v] = nearest_frame(v, c[v]); });
+    parallel_for_each_index(n, [&](std::size_t v) { s.coefficients[v] = frames.frame(s.vertex_frames[v]); });
     const Cross_field_smoother smoother(neighbours_, axis_);
     s.round_energies = smoother.smooth(s.vertex_frames, s.coefficients, max_rounds, tolerance, iterations_per_round_,
                                        [&](int round, double e) {
@@ -125,7 +125,7 @@ public:
     s.edges = edges_;
     // one frame per cell, interpolated at its centroid, for the matchings
     std::vector<Eigen::Matrix3d> cell_frames(cells_.size());
-    for_each_index(cells_.size(), [&](std::size_t i) {
+    parallel_for_each_index(cells_.size(), [&](std::size_t i) {
       SH_vector q = SH_vector::Zero();
       for(std::size_t v : cells_[i]) q += s.coefficients[v];
       cell_frames[i] = frames.nearest_frame(q);

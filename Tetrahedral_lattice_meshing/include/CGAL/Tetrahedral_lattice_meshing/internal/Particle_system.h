@@ -29,6 +29,7 @@
 #ifndef CGAL_TETRAHEDRAL_LATTICE_MESHING_INTERNAL_PARTICLE_SYSTEM_H
 #define CGAL_TETRAHEDRAL_LATTICE_MESHING_INTERNAL_PARTICLE_SYSTEM_H
 
+#include <CGAL/GSM_mesh_optimization/internal/Parallel_for.h>
 #include <CGAL/Tetrahedral_lattice_meshing/Lattice.h>
 #include <CGAL/Tetrahedral_lattice_meshing/gaussian_hole_kernel.h>
 #include <CGAL/Tetrahedral_lattice_meshing/internal/Neighbor_grid.h>
@@ -38,8 +39,6 @@
 #include <Eigen/Eigenvalues>
 #include <LBFGS.h>
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <array>
@@ -53,13 +52,7 @@ namespace CGAL {
 namespace Tetrahedral_lattice_meshing {
 namespace internal {
 
-template <class F>
-void parallel_for_each_index(std::size_t n, F f)
-{
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 256), [&](const tbb::blocked_range<std::size_t>& r) {
-    for(std::size_t i = r.begin(); i != r.end(); ++i) f(i);
-  });
-}
+using GSM_mesh_optimization::internal::parallel_for_each_index;
 
 /// a boundary that is not there: every particle is free (tests, unbounded lattices)
 struct No_boundary
