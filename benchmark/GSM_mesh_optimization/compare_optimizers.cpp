@@ -33,7 +33,8 @@ namespace {
 const char* usage =
     "usage: compare_optimizers INPUT [--vertices N] [--features-angle DEG] [--chains c1,c2,...]\n"
     "                          [--repeat N] [--threads N] [--json FILE] [--out-dir DIR] [--seed N]\n"
-    "                          [--field NAME] [--graded] [--verbose] [--refuse-self-intersecting]\n"
+    "                          [--field NAME] [--sizing uniform|thickness] [--graded] [--verbose]\n"
+    "                          [--cells-across K] [--gradation G] [--refuse-self-intersecting]\n"
     "  INPUT  a closed triangle surface (OFF, OBJ, PLY, STL, ...) or one of sphere, cube, torus,\n"
     "         torus-in-ball (the torus inside a ball of radius 2: two subdomains)\n"
     "  --vertices N        target vertex count of the initial mesh, within 10% (default 10000)\n"
@@ -56,6 +57,12 @@ const char* usage =
     "                      INPUT sphere), anisotropic-cube (Fig. 3.9, INPUT cube): the initial mesh\n"
     "                      follows the field's density, gsm gets the field, and quality is\n"
     "                      measured in the metric\n"
+    "  --sizing S          uniform (default), or thickness: the initial mesh's size and gsm's sizing\n"
+    "                      field follow the walls' and gaps' thickness, K cells across, graded by\n"
+    "                      G (CGAL::Thickness_sizing_field_3), scaled to the vertex count; surfaces only\n"
+    "  --cells-across K    with --sizing thickness (default 3)\n"
+    "  --gradation G       with --sizing thickness: the size grows by at most G times the distance\n"
+    "                      (default 0.3)\n"
     "  --graded            a graded initial mesh: facet distance s/100, facet and cell sizes 3s for\n"
     "                      the edge size s (fine where the surface curves, coarse inside)\n"
     "  --verbose           progress of the optimizers that report it (gsm)\n"
@@ -98,6 +105,16 @@ Options parse_command_line(int argc, char** argv)
       o.seed = parse_number<unsigned int>(arg, value());
     } else if(arg == "--field") {
       o.field = value();
+    } else if(arg == "--sizing") {
+      o.sizing = value();
+      if(o.sizing != "uniform" && o.sizing != "thickness")
+        throw Input_error("unknown --sizing '" + o.sizing + "' (known: uniform, thickness)");
+    } else if(arg == "--cells-across") {
+      o.cells_across = parse_number<double>(arg, value());
+      if(!(o.cells_across > 0 && o.cells_across <= 100)) throw Input_error("--cells-across must be in (0, 100]");
+    } else if(arg == "--gradation") {
+      o.gradation = parse_number<double>(arg, value());
+      if(!(o.gradation > 0 && o.gradation <= 10)) throw Input_error("--gradation must be in (0, 10]");
     } else if(arg == "--verbose") {
       o.verbose = true;
     } else if(arg == "--graded") {
@@ -122,6 +139,10 @@ Options parse_command_line(int argc, char** argv)
      o.field != "anisotropic-cube")
     throw Input_error("unknown --field '" + o.field +
                       "' (known: adaptive-sphere, anisotropic-sphere, anisotropic-cube)");
+  if(o.sizing == "thickness" && (!o.field.empty() || o.graded))
+    throw Input_error("--sizing thickness sets the size itself: it cannot go with --field or --graded");
+  if(o.sizing == "thickness" && is_implicit_domain_name(o.input))
+    throw Input_error("--sizing thickness needs a surface INPUT, not '" + o.input + "'");
   if(!o.field.empty() && o.input != field_domain)
     throw Input_error("--field " + o.field + " is defined on INPUT " + field_domain);
   return o;

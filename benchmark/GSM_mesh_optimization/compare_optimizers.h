@@ -31,6 +31,9 @@ struct Options
   bool graded = false;                 // --graded
   bool refuse_self_intersecting = false; // --refuse-self-intersecting
   std::string field;                   // --field: adaptive-sphere, anisotropic-sphere, anisotropic-cube
+  std::string sizing = "uniform";      // --sizing: uniform, thickness
+  double cells_across = 3;             // --cells-across, with --sizing thickness
+  double gradation = 0.3;              // --gradation, with --sizing thickness
 };
 
 

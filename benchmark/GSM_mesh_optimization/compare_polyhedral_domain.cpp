@@ -15,11 +15,16 @@
 #include <CGAL/Polygon_mesh_processing/distance.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Polyhedral_mesh_domain_with_features_3.h>
+#include <CGAL/Local_thickness_3.h>
+#include <CGAL/Real_timer.h>
 #include <CGAL/Surface_mesh.h>
+#include <CGAL/Thickness_sizing_field_3.h>
 #include <CGAL/facets_in_complex_3_to_triangle_mesh.h>
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
+#include <vector>
 #include <stdexcept>
 
 namespace vvm_benchmark {
@@ -49,6 +54,28 @@ double read_closed_surface(const std::string& path, Surface_mesh& sm, bool refus
   }
 }
 
+// --sizing thickness: the sizing field of the surface's walls and gaps
+Target_field input_sizing(const Options& options, const Surface_mesh& surface)
+{
+  if(options.sizing != "thickness") return Target_field("");
+  CGAL::Real_timer timer;
+  timer.start();
+  const CGAL::Local_thickness_3<K> thickness(surface);
+  const auto size = std::make_shared<const CGAL::Thickness_sizing_field_3<K>>(
+      thickness, CGAL::VVM::parameters::cells_across(options.cells_across,
+                                                     CGAL::VVM::parameters::gradation(options.gradation)));
+  timer.stop();
+  std::vector<double> on_surface; // the size a scale factor of 1 gives, typically
+  for(const auto& s : thickness.samples()) on_surface.push_back((*size)(s.point));
+  std::nth_element(on_surface.begin(), on_surface.begin() + std::ptrdiff_t(on_surface.size() / 2), on_surface.end());
+  std::cerr << "thickness sizing: " << thickness.samples().size() << " samples, median size "
+            << on_surface[on_surface.size() / 2] << ", grid spacing " << size->grid_spacing() << " (" << timer.time()
+            << " s)\n";
+  return Target_field::input_sizing(
+      "thickness", [size](const Eigen::Vector3d& x) { return (*size)(K::Point_3(x.x(), x.y(), x.z())); },
+      on_surface[on_surface.size() / 2]);
+}
+
 } // namespace
 
 int run_polyhedral_domain(const Options& options)
@@ -60,7 +87,7 @@ int run_polyhedral_domain(const Options& options)
   const double angle = options.features_angle >= 0 ? options.features_angle : (is_cube ? 60. : 0.);
   if(angle > 0) domain.detect_features(angle);
   Comparison_driver<C3T3, Domain> driver(options, is_cube ? "cube" : GSM::IO::file_stem(options.input), domain,
-                                         volume);
+                                         volume, input_sizing(options, surface));
   // two-sided, sampled on a grid of about 200,000 points on each surface (deterministic)
   const double spacing = std::sqrt(PMP::area(surface) / 2e5);
   driver.set_boundary_distance([&surface, spacing](const C3T3& c3t3) {

@@ -91,6 +91,22 @@ struct Target_field
   std::string name;
   std::function<double(const Eigen::Vector3d&)> sizing;
   std::function<Eigen::Matrix3d(const Eigen::Vector3d&)> metric;
+  // --sizing thickness: a sizing field made from the input, not a --field of the dissertation;
+  // angles are measured in the mesh itself (an isotropic size does not change them)
+  bool from_input = false;
+  double typical_size = 1; // the size a field's scale factor is relative to
+
+  /// --sizing NAME with the sizing field `size`, whose typical value is `typical`
+  static Target_field input_sizing(const std::string& sizing_name,
+                                   std::function<double(const Eigen::Vector3d&)> size, double typical)
+  {
+    Target_field f("");
+    f.name = sizing_name;
+    f.sizing = std::move(size);
+    f.from_input = true;
+    f.typical_size = typical;
+    return f;
+  }
 
   explicit Target_field(const std::string& field_name) : name(field_name)
   {
@@ -150,9 +166,9 @@ class Comparison_driver
 
 public:
   Comparison_driver(const Options& options, const std::string& model, const MeshDomain& domain,
-                    double domain_volume)
+                    double domain_volume, Target_field input_sizing = Target_field(""))
     : options_(options), model_(model), domain_(domain), domain_volume_(domain_volume),
-      field_(options.field)
+      field_(input_sizing.from_input ? std::move(input_sizing) : Target_field(options.field))
   {
     if(!field_.name.empty()) model_ += "_" + field_.name;
   }
@@ -202,6 +218,14 @@ private:
       return CGAL::make_mesh_3<C3T3>(domain_, criteria, params::no_perturb(), params::no_exude());
     }
     const Scaled_isotropic_size size{s, &field_};
+    if(field_.from_input) {
+      // as the uniform sizing's criteria, the size s replaced by the field's size
+      const Scaled_isotropic_size distance{0.1 * s, &field_};
+      Mesh_criteria criteria(params::edge_size = size, params::facet_angle = 25, params::facet_size = size,
+                             params::facet_distance = distance, params::cell_radius_edge_ratio = 3,
+                             params::cell_size = size);
+      return CGAL::make_mesh_3<C3T3>(domain_, criteria, params::no_perturb(), params::no_exude());
+    }
     // the fields' isotropic sizes on the boundary are 0.1 s or more
     Mesh_criteria criteria(params::edge_size = size, params::facet_angle = 25, params::facet_size = size,
                            params::facet_distance = 0.01 * s, params::cell_radius_edge_ratio = 3,
@@ -211,7 +235,7 @@ private:
 
   GSM::Mesh_quality_statistics quality(const C3T3& c3t3) const
   {
-    if(field_.name.empty()) return GSM::mesh_quality_statistics(c3t3);
+    if(field_.name.empty() || field_.from_input) return GSM::mesh_quality_statistics(c3t3);
     return GSM::mesh_quality_statistics(c3t3, [this](const auto& p) {
       return field_.B(Eigen::Vector3d(p.x(), p.y(), p.z()));
     });
@@ -230,7 +254,8 @@ private:
   void make_initial_mesh()
   {
     const double first_size = std::cbrt(domain_volume_ / (0.2 * double(options_.target_vertices))) // corrected below
-                              / field_.isotropic_size(Eigen::Vector3d::Zero());
+                              / (field_.from_input ? field_.typical_size
+                                                   : field_.isotropic_size(Eigen::Vector3d::Zero()));
     GSM::Mesh_with_vertex_count_result<C3T3> r;
     try {
       r = GSM::mesh_with_vertex_count([this](double s) { return mesh_with_size(s); }, options_.target_vertices,
@@ -351,7 +376,9 @@ private:
        << ", \"boundary_vertex_share\": " << r.layering.boundary_vertex_share
        << ", \"boundary_edge_length\": " << r.layering.boundary_edge_length
        << ", \"first_layer_ratio\": " << r.layering.first_layer_ratio
-       << ", \"field\": \"" << field_.name << "\", \"repeat\": " << (std::max)(1, options_.repeat) << ", \"threads\": " << options_.threads
+       << ", \"field\": \"" << (field_.from_input ? "" : field_.name)
+       << "\", \"sizing\": \"" << (field_.from_input ? field_.name : std::string("uniform"))
+       << "\", \"repeat\": " << (std::max)(1, options_.repeat) << ", \"threads\": " << options_.threads
        << ", \"edge_size\": " << edge_size_ << ", \"mesh_time_s\": " << mesh_time_s_
        << ", \"return_codes\": \"" << r.return_codes << "\"}\n";
     if(!os) throw std::runtime_error("cannot write '" + options_.json_file + "'");
@@ -364,12 +391,13 @@ private:
       if(r.chain == "perturb+exude") perturb_exude_time = r.opt_time_s;
     std::printf("\nmodel %s: initial make_mesh_3 mesh, %s size %.4g, %.2f s; "
                 "optimizer times are medians of %d run(s)\n",
-                model_.c_str(), field_.name.empty() ? "uniform" : "field-scaled", edge_size_,
+                model_.c_str(), field_.name.empty() ? "uniform" : field_.from_input ? "thickness-scaled" : "field-scaled",
+                edge_size_,
                 mesh_time_s_, (std::max)(1, options_.repeat));
     std::printf("initial mesh: %.0f%% of the vertices on the boundary; edges from it to the first interior "
                 "vertices %.2fx the edges between two boundary vertices (medians)\n",
                 100 * initial_layering_.boundary_vertex_share, initial_layering_.first_layer_ratio);
-    if(!field_.name.empty())
+    if(!field_.name.empty() && !field_.from_input)
       std::printf("quality measured in the metric of %s (each tet mapped by M^1/2)\n", field_.name.c_str());
     std::printf("%-22s %7s %7s %7s %7s %7s %6s %6s %6s %6s %6s %6s %4s %9s %7s%s\n", "chain", "verts",
                 "tets", "th_min", "th_max", "mean_mn", "<10", "<20", "<30", "<40", "g_min",

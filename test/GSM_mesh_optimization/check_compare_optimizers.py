@@ -5,8 +5,8 @@
 
 usage: check_compare_optimizers.py COMPARE_OPTIMIZERS DATA_DIR WORK_DIR
 
-- runs it on the built-in sphere and on data/fandisk.off (features at 60 deg) at
-  small sizes, then reads every .mesh and .vtu back with meshio: point and tet
+- runs it on the built-in sphere, on data/fandisk.off (features at 60 deg) and on
+  data/thin_walled/plate_with_holes.off with --sizing thickness at small sizes, then reads every .mesh and .vtu back with meshio: point and tet
   counts, and the min dihedral angle and the tets under 30 deg recomputed here,
   independently, from the .mesh, must equal what the JSON reports;
 - feeds it bad inputs (missing, empty, garbage, open, non-finite, bad options,
@@ -195,6 +195,18 @@ def main():
         hd = fandisk["gsm"]["hausdorff_to_input"]
         check(hd <= 1.25 * hd0, f"fandisk: gsm boundary Hausdorff distance {hd} within 25% of {hd0}")
 
+    # --sizing thickness on a thin-walled part (a plate 0.15 thick): the size follows the
+    # walls, the count still within 10%, and gsm keeps its angles
+    plate = check_run("plate_with_holes_thickness",
+                      [os.path.join(DATA, "thin_walled", "plate_with_holes.off"), "--features-angle", "60",
+                       "--sizing", "thickness"], 3000, ["init", "gsm"])
+    if plate:
+        check(all(row["sizing"] == "thickness" for row in plate.values()), "plate: JSON sizing key")
+        check(plate["gsm"]["n_min_dih_lt20"] == 0 and plate["gsm"]["theta_min"] > plate["init"]["theta_min"] + 10,
+              f"plate: gsm leaves no tet under 20 deg (min {plate['gsm']['theta_min']:.2f})")
+    if sphere:
+        check(all(row["sizing"] == "uniform" for row in sphere.values()), "sphere: JSON sizing key")
+
     cube = open(os.path.join(DATA, "cube.off")).read()
     lines = cube.split("\n")
     open_cube = "\n".join(["OFF", "8 11 0"] + lines[2:10] + lines[11:]) if lines[1].startswith("8 12") else None
@@ -224,6 +236,11 @@ def main():
     check_error("bad number", ["sphere", "--vertices", "ten"], "expects a number")
     check_error("too few vertices", ["sphere", "--vertices", "3"], "--vertices")
     check_error("bad angle", ["sphere", "--features-angle", "-5"], "--features-angle")
+    check_error("unknown sizing", ["sphere", "--sizing", "curvature"], "unknown --sizing")
+    check_error("thickness of an implicit domain", ["sphere", "--sizing", "thickness"], "needs a surface")
+    check_error("thickness and graded", [os.path.join(DATA, "cube.off"), "--sizing", "thickness", "--graded"],
+                "cannot go with")
+    check_error("bad gradation", ["sphere", "--gradation", "0"], "--gradation")
 
     return check.summary()
 
