@@ -7,6 +7,7 @@
 
 #include "box_surface.h"
 #include "comparison_driver.h"
+#include "thickness_sizing.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Mesh_complex_3_in_triangulation_3.h>
@@ -15,16 +16,11 @@
 #include <CGAL/Polygon_mesh_processing/distance.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Polyhedral_mesh_domain_with_features_3.h>
-#include <CGAL/Local_thickness_3.h>
-#include <CGAL/Real_timer.h>
 #include <CGAL/Surface_mesh.h>
-#include <CGAL/Thickness_sizing_field_3.h>
 #include <CGAL/facets_in_complex_3_to_triangle_mesh.h>
 
 #include <algorithm>
 #include <cmath>
-#include <memory>
-#include <vector>
 #include <stdexcept>
 
 namespace vvm_benchmark {
@@ -58,22 +54,11 @@ double read_closed_surface(const std::string& path, Surface_mesh& sm, bool refus
 Target_field input_sizing(const Options& options, const Surface_mesh& surface)
 {
   if(options.sizing != "thickness") return Target_field("");
-  CGAL::Real_timer timer;
-  timer.start();
-  const CGAL::Local_thickness_3<K> thickness(surface);
-  const auto size = std::make_shared<const CGAL::Thickness_sizing_field_3<K>>(
-      thickness, CGAL::VVM::parameters::cells_across(options.cells_across,
-                                                     CGAL::VVM::parameters::gradation(options.gradation)));
-  timer.stop();
-  std::vector<double> on_surface; // the size a scale factor of 1 gives, typically
-  for(const auto& s : thickness.samples()) on_surface.push_back((*size)(s.point));
-  std::nth_element(on_surface.begin(), on_surface.begin() + std::ptrdiff_t(on_surface.size() / 2), on_surface.end());
-  std::cerr << "thickness sizing: " << thickness.samples().size() << " samples, median size "
-            << on_surface[on_surface.size() / 2] << ", grid spacing " << size->grid_spacing() << " (" << timer.time()
-            << " s)\n";
+  const Thickness_sizing<K> sizing = thickness_sizing<K>(surface, options.cells_across, options.gradation);
+  const auto field = sizing.field;
   return Target_field::input_sizing(
-      "thickness", [size](const Eigen::Vector3d& x) { return (*size)(K::Point_3(x.x(), x.y(), x.z())); },
-      on_surface[on_surface.size() / 2]);
+      "thickness", [field](const Eigen::Vector3d& x) { return (*field)(K::Point_3(x.x(), x.y(), x.z())); },
+      sizing.median_size);
 }
 
 } // namespace

@@ -14,10 +14,12 @@
 #include <CGAL/make_mesh_3.h> // first: it brings the TBB headers CGAL's other Mesh_3 headers need
 
 #include "box_surface.h"
+#include "thickness_sizing.h"
 #include "command_line.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Frame_fields/Closed_form_frame_field_3.h>
+#include <CGAL/Frame_fields/Scaled_frame_field_3.h>
 #include <CGAL/Frame_fields/dissertation_frame_fields.h>
 #include <CGAL/GSM_mesh_optimization/IO/read_closed_surface.h>
 #include <CGAL/GSM_mesh_optimization/mesh_with_vertex_count.h>
@@ -74,7 +76,8 @@ const char* usage =
     "usage: compare_hex_dominant INPUT [--particles N] [--features-angle DEG]\n"
     "                            [--field cross|identity|fig4.15a..f|cylinder|cylinder-scaled]\n"
     "                            [--q-bound X | --q-bound-sweep] [--threads N] [--json FILE] [--out-dir DIR]\n"
-    "                            [--boundary-distance D] [--seed N] [--levels K] [--verbose]\n"
+    "                            [--boundary-distance D] [--seed N] [--levels K] [--sizing uniform|thickness]\n"
+    "                            [--verbose]\n"
     "  INPUT  a closed triangle surface (OFF, OBJ, PLY, STL, ...), or cube, warped-cube or cylinder:\n"
     "         cube is [-1,1]^3 ([0.1,1.1]^3 with fig4.15c and fig4.15d); warped-cube is T [-1,1]^3\n"
     "         for a constant field T (fig4.15b, e, f; scaled to volume 8), the warped cube of\n"
@@ -97,6 +100,8 @@ const char* usage =
     "                      none)\n"
     "  --seed N            seed of the particles and of make_mesh_3 (default 0)\n"
     "  --levels K          multiresolution levels of the particles, K in [0, 6] (default: the package's choice)\n"
+    "  --sizing S          uniform (default), or thickness: the field's frames scaled by the walls' and\n"
+    "                      gaps' thickness, 3 cells across, graded by 0.3 (CGAL::Thickness_sizing_field_3)\n"
     "  --verbose           progress of the particle rounds\n";
 
 // T of the constant fields
@@ -111,7 +116,7 @@ std::optional<Eigen::Matrix3d> constant_frame(const std::string& f)
 
 struct Options
 {
-  std::string input, field, json_file, out_dir;
+  std::string input, field, json_file, out_dir, sizing = "uniform";
   std::size_t particles = 30000;
   double features_angle = -1, q_bound = 0.5, boundary_distance = 0;
   bool sweep = false, verbose = false;
@@ -153,6 +158,11 @@ Options parse_command_line(int argc, char** argv)
     else if(arg == "--levels") {
       o.levels = parse_number<int>(arg, value());
       if(o.levels < 0 || o.levels > 6) throw Input_error("--levels must be in [0, 6]");
+    }
+    else if(arg == "--sizing") {
+      o.sizing = value();
+      if(o.sizing != "uniform" && o.sizing != "thickness")
+        throw Input_error("unknown --sizing '" + o.sizing + "' (known: uniform, thickness)");
     }
     else if(arg == "--verbose") o.verbose = true;
     else if(arg == "--help" || arg == "-h") {
@@ -304,7 +314,15 @@ int run(const Options& o)
 
   CGAL::Real_timer timer;
   timer.start();
-  const Field field = make_field(o, domain, volume);
+  Field field = make_field(o, domain, volume);
+  if(o.sizing == "thickness") { // T(x) h(x) / (h's median on the surface): the lattice's spacing follows the size
+    const auto sizing = vvm_benchmark::thickness_sizing<K>(surface, 3., 0.3);
+    const auto size = sizing.field;
+    field = Field([scaled = FF::Scaled_frame_field_3<Field, std::function<double(const Point_3&)>>(
+                       field, [size](const Point_3& p) { return (*size)(p); }, sizing.median_size)](
+                      const Point_3& p) { return scaled.T(p); });
+    model += "_thickness";
+  }
   const double field_time = timer.time();
   auto B = [&field](const Eigen::Vector3d& x) { return Eigen::Matrix3d(field.B(Point_3(x[0], x[1], x[2]))); };
 
@@ -371,7 +389,8 @@ int run(const Options& o)
                 s.number_of_inverted_cells, s.number_of_nonconforming_faces, ratio, field_time + report.particle_time,
                 report.tetrahedra_time, report.merge_time, total);
     if(json)
-      json << "{\"model\": \"" << model << "\", \"field\": \"" << o.field << "\", \"q_bound\": " << q
+      json << "{\"model\": \"" << model << "\", \"field\": \"" << o.field << "\", \"sizing\": \"" << o.sizing
+           << "\", \"q_bound\": " << q
            << ", \"n_particles\": " << mesh.points.size() << ", \"n_hex\": " << s.number_of_hexahedra
            << ", \"n_prism\": " << s.number_of_prisms << ", \"n_pyramid\": " << s.number_of_pyramids
            << ", \"n_tet\": " << s.number_of_tetrahedra << ", \"h_vol_percent\": " << s.hexahedron_volume_percent

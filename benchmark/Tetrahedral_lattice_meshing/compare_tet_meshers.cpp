@@ -34,7 +34,7 @@ const char* usage =
     "usage: compare_tet_meshers INPUT [--vertices N] [--features-angle DEG]\n"
     "                           [--field identity|cross|rotation-y|fig4.8|fig4.9] [--methods m1,m2,...]\n"
     "                           [--threads N] [--json FILE] [--out-dir DIR] [--seed N] [--levels K]\n"
-    "                           [--sliver-bound DEG] [--verbose]\n"
+    "                           [--sliver-bound DEG] [--sizing uniform|thickness] [--verbose]\n"
     "  INPUT  a closed triangle surface (OFF, OBJ, PLY, STL, ...), or cube, sphere, torus\n"
     "         (cube is [-1,1]^3, [0.1,1.1]^3 with fig4.8, [1,11]^3 with fig4.9; torus: radii 1 and 0.4 about y)\n"
     "  --vertices N        the vertex count of every method (default 10000): the lattice methods ask\n"
@@ -56,6 +56,9 @@ const char* usage =
     "  --levels K          multiresolution levels of the particles, K in [0, 6] (default: the package's choice)\n"
     "  --sliver-bound DEG  the smallest angle sought by the polishing of bcc and fcc (default 30;\n"
     "                      0: none; higher lifts more boundary-layer cells for more alignment error)\n"
+    "  --sizing S          uniform (default), or thickness: the field's frames and make_mesh_3's size\n"
+    "                      scaled by the walls' and gaps' thickness, 3 cells across, graded by 0.3\n"
+    "                      (CGAL::Thickness_sizing_field_3); surfaces only\n"
     "  --verbose           progress of the particle rounds\n";
 
 using vvm_benchmark::parse_number;
@@ -76,6 +79,10 @@ Options parse_command_line(int argc, char** argv)
     } else if(arg == "--features-angle") {
       o.features_angle = parse_number<double>(arg, value());
       if(!(o.features_angle >= 0 && o.features_angle < 180)) throw Input_error("--features-angle must be in [0, 180)");
+    } else if(arg == "--sizing") {
+      o.sizing = value();
+      if(o.sizing != "uniform" && o.sizing != "thickness")
+        throw Input_error("unknown --sizing '" + o.sizing + "' (known: uniform, thickness)");
     } else if(arg == "--field") {
       o.field = value();
     } else if(arg == "--methods") {
@@ -114,6 +121,10 @@ Options parse_command_line(int argc, char** argv)
   const bool known_field = o.field == "identity" || o.field == "cross" || o.field == "rotation-y" ||
                            o.field == "fig4.8" || o.field == "fig4.9";
   if(!known_field) throw Input_error("unknown --field '" + o.field + "' (known: identity, cross, rotation-y, fig4.8, fig4.9)");
+  if(o.sizing == "thickness" && (is_implicit_domain_name(o.input) || o.input == "cube"))
+    throw Input_error("--sizing thickness needs a surface INPUT, not '" + o.input + "'");
+  if(o.sizing == "thickness" && o.field != "identity" && o.field != "cross")
+    throw Input_error("--sizing thickness scales the identity or the cross field, not " + o.field);
   if((o.field == "fig4.8" || o.field == "fig4.9") && o.input != "cube")
     throw Input_error("--field " + o.field + " is defined on INPUT cube");
   return o;

@@ -23,6 +23,7 @@ struct Options
   std::size_t target_vertices = 10000;
   double features_angle = -1;       // < 0: not given (60 for the cube)
   std::string field = "identity";   // identity, cross, rotation-y, fig4.8, fig4.9
+  std::string sizing = "uniform";   // uniform, thickness (the field's frames scaled by the thickness sizing)
   std::vector<std::string> methods; // empty: the default list
   int threads = 0;
   std::string json_file;

@@ -8,6 +8,7 @@
 #include "tet_mesher_comparison.h"
 
 #include "box_surface.h"
+#include "thickness_sizing.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/GSM_mesh_optimization/IO/read_closed_surface.h>
@@ -63,8 +64,15 @@ int run_polyhedral_domain(const Options& options)
     return (std::max)(PMP::approximate_Hausdorff_distance<CGAL::Parallel_if_available_tag>(boundary, surface, np),
                       PMP::approximate_Hausdorff_distance<CGAL::Parallel_if_available_tag>(surface, boundary, np));
   };
+  std::function<double(const K::Point_3&)> size;
+  if(options.sizing == "thickness") {
+    const auto sizing = vvm_benchmark::thickness_sizing<K>(surface, 3., 0.3);
+    const auto field = sizing.field;
+    const double median = sizing.median_size;
+    size = [field, median](const K::Point_3& p) { return (*field)(p) / median; };
+  }
   Tet_mesher_comparison<C3T3, Domain> comparison(options, is_cube ? "cube" : GSM::IO::file_stem(options.input),
-                                                 domain, volume, distance);
+                                                 domain, volume, distance, size);
   return comparison.run();
 }
 

@@ -14,6 +14,7 @@
 #include <CGAL/make_mesh_3.h>
 
 #include <CGAL/Frame_fields/Closed_form_frame_field_3.h>
+#include <CGAL/Frame_fields/Scaled_frame_field_3.h>
 #include <CGAL/Frame_fields/dissertation_frame_fields.h>
 #include <CGAL/GSM_mesh_optimization/IO/write_VTU_with_quality.h>
 #include <CGAL/GSM_mesh_optimization/mesh_quality_statistics.h>
@@ -93,11 +94,15 @@ class Tet_mesher_comparison
   typedef CGAL::Mesh_criteria_3<typename C3T3::Triangulation> Mesh_criteria;
 
 public:
+  /// `size`: with --sizing thickness, the sizing field that scales the frames (relative sizes)
   Tet_mesher_comparison(const Options& options, const std::string& model, const MeshDomain& domain,
-                        double volume, std::function<double(const C3T3&)> boundary_distance)
+                        double volume, std::function<double(const C3T3&)> boundary_distance,
+                        std::function<double(const Point_3&)> size = {})
     : options_(options), model_(model), domain_(domain), volume_(volume),
-      boundary_distance_(std::move(boundary_distance)), field_(identity())
-  {}
+      boundary_distance_(std::move(boundary_distance)), field_(identity()), size_(std::move(size))
+  {
+    if(size_) model_ += "_thickness";
+  }
 
   int run()
   {
@@ -143,6 +148,9 @@ private:
       field_ = Field([cross](const Point_3& p) { return cross->T(p); });
     } else
       throw Input_error("unknown --field '" + f + "' (known: identity, cross, rotation-y, fig4.8, fig4.9)");
+    if(size_) // T(x) h(x): the lattice's spacing follows the size
+      field_ = Field([scaled = FF::Scaled_frame_field_3<Field, std::function<double(const Point_3&)>>(field_, size_, 1.)](
+                         const Point_3& p) { return scaled.T(p); });
     field_time_s_ = timer.time();
     // conformal (rotations, uniform scale): quality is measured as is, else in the metric
     std::vector<Point_3> samples;
@@ -154,6 +162,10 @@ private:
     conformal_ = f != "fig4.8" && f != "fig4.9" && TLM::internal::is_conformal(field_, samples);
   }
 
+  // whether make_mesh_3 gets one size: the field's density is uniform (the cross field's unit
+  // frames are, up to interpolation, but make_mesh_3 follows them anyway)
+  bool uniform_density() const { return conformal_ && options_.field != "cross" && !size_; }
+
   // the isotropic edge length of the lattice's density, up to a constant (make_mesh_3's sizing)
   double relative_size(const Point_3& p) const { return std::cbrt(std::abs(field_.T(p).determinant())); }
 
@@ -161,7 +173,7 @@ private:
   {
     namespace P = CGAL::parameters;
     CGAL::get_default_random() = CGAL::Random(options_.seed);
-    if(conformal_ && options_.field != "cross") {
+    if(uniform_density()) {
       Mesh_criteria criteria(P::edge_size = s, P::facet_angle = 25, P::facet_size = s, P::facet_distance = s / 10.,
                              P::cell_radius_edge_ratio = 3, P::cell_size = s);
       return CGAL::make_mesh_3<C3T3>(domain_, criteria, P::no_perturb(), P::no_exude());
@@ -252,8 +264,7 @@ private:
     const Point_3 c(0.5 * (domain_.bbox().xmin() + domain_.bbox().xmax()),
                     0.5 * (domain_.bbox().ymin() + domain_.bbox().ymax()),
                     0.5 * (domain_.bbox().zmin() + domain_.bbox().zmax()));
-    const double first = std::cbrt(volume_ / (0.2 * double(target))) /
-                         (conformal_ && options_.field != "cross" ? 1. : relative_size(c));
+    const double first = std::cbrt(volume_ / (0.2 * double(target))) / (uniform_density() ? 1. : relative_size(c));
     auto r = GSM::mesh_with_vertex_count([this](double s) { return mesh_with_size(s); }, target, first, 0.03,
                                          CGAL::parameters::verbose(options_.verbose));
     initial_ = std::move(r.c3t3);
@@ -358,7 +369,7 @@ private:
     for(const Method_result& r : results) {
       const GSM::Mesh_quality_statistics& q = r.quality;
       os << "{\"model\": \"" << model_ << "\", \"method\": \"" << r.method << "\", \"field\": \"" << options_.field
-         << "\", \"n_vertices\": " << q.number_of_vertices << ", \"n_tets\": " << q.number_of_cells
+         << "\", \"sizing\": \"" << options_.sizing << "\", \"n_vertices\": " << q.number_of_vertices << ", \"n_tets\": " << q.number_of_cells
          << ", \"theta_min\": " << q.min_dihedral_angle << ", \"mean_min_dihedral\": " << q.mean_min_dihedral_angle
          << ", \"theta_max\": " << q.max_dihedral_angle << ", \"mean_max_dihedral\": " << q.mean_max_dihedral_angle
          << ", \"rho_mean\": " << q.mean_edge_radius_ratio << ", \"kappa_mean\": " << q.mean_condition
@@ -388,6 +399,7 @@ private:
   double volume_;
   std::function<double(const C3T3&)> boundary_distance_;
   Field field_;
+  std::function<double(const Point_3&)> size_; // --sizing thickness
   bool conformal_ = true;
   double field_time_s_ = 0;
   std::map<std::string, Lattice_run> lattice_runs_;

@@ -10,7 +10,9 @@
 // - plate_with_holes.off: a 4 x 3 plate, 0.15 thick, with six holes of radius 0.25;
 // - open_box.off: a 2 x 1.5 x 1 tray whose walls and floor are 0.1 thick;
 // - ribbed_bracket.off: an L bracket (a 4 x 2 base and a 1.5 high wall, both 0.12
-//   thick) held by three triangular ribs 0.1 thick.
+//   thick) held by three triangular ribs 0.1 thick;
+// - heat_sink.off: a 2 x 1.5 x 0.5 block carrying five fins 0.08 thick and 1 high, 0.32
+//   apart: thin walls and thin gaps on a thick part.
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/corefinement.h>
@@ -126,6 +128,10 @@ int main(int argc, char** argv)
     for(double x : {0.3, 1.95, 3.6})
       unite(bracket, prism_along_x({{0.06, 0.06}, {1.2, 0.06}, {0.06, 1.2}}, x, x + 0.1));
     write(bracket, dir + "/ribbed_bracket.off", 0.05);
+
+    Surface_mesh sink = box(0, 0, 0, 2, 1.5, 0.5);
+    for(double x : {0.1, 0.5, 0.9, 1.3, 1.7}) unite(sink, box(x, 0, 0.4, x + 0.08, 1.5, 1.5));
+    write(sink, dir + "/heat_sink.off", 0.04);
   } catch(const std::exception& e) {
     std::cerr << "make_thin_walled_parts: " << e.what() << "\n";
     return 1;

@@ -15,6 +15,7 @@
 #include <CGAL/Frame_fields/Constant_frame_field_3.h>
 #include <CGAL/Frame_fields/Discrete_frame_field_3.h>
 #include <CGAL/Frame_fields/IO/frame_field_text_format.h>
+#include <CGAL/Frame_fields/Scaled_frame_field_3.h>
 #include <CGAL/Frame_fields/IO/write_VTU.h>
 #include <CGAL/Frame_fields/boundary_alignment.h>
 #include <CGAL/Frame_fields/dissertation_frame_fields.h>
@@ -160,6 +161,17 @@ void test_frame_checks()
   VVM_CHECK((bad.T(Point(-1, 0, 0)) - T).norm() == 0);
   VVM_CHECK(throws_invalid_argument([&] { bad.T(Point(1, 0, 0)); }, "degenerate"));
   VVM_CHECK(throws_invalid_argument([&] { bad.B(Point(1, 0, 0)); }, "at (1 0 0)"));
+
+  // a frame field scaled by a sizing field: T h / h0, and its inverse; a size that is not
+  // positive is an error that says where
+  const auto size = [](const Point& p) { return p.x() > 0 ? 1 + p.x() : p.x() == 0 ? 0. : std::nan(""); };
+  const FF::Scaled_frame_field_3<FF::Constant_frame_field_3<K>, decltype(size)> scaled(constant, size, 2.);
+  VVM_CHECK((scaled.T(Point(3, 0, 0)) - 2 * T).norm() < 1e-14);
+  VVM_CHECK((scaled.B(Point(0.5, 0, 0)) * T * 0.75 - Eigen::Matrix3d::Identity()).norm() < 1e-14);
+  VVM_CHECK(throws_invalid_argument([&] { scaled.T(Point(0, 0, 0)); }, "the size at (0 0 0) is 0"));
+  VVM_CHECK(throws_invalid_argument([&] { scaled.B(Point(-1, 0, 0)); }, "not positive"));
+  VVM_CHECK(throws_invalid_argument([&] { FF::Scaled_frame_field_3<FF::Constant_frame_field_3<K>, decltype(size)>(constant, size, 0.); },
+                                    "reference size"));
 }
 
 // T and B of `field` at p against the formula's T

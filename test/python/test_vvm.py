@@ -285,6 +285,10 @@ class TestErrors:
             vvm.tet_mesh(surface, vertices=500, progress=3)
         with pytest.raises(ValueError, match="frame-field"):
             vvm.tet_mesh(surface, method="bcc", vertices=500, field=work("no_such.field"))
+        with pytest.raises(ValueError, match="unknown sizing"):
+            vvm.tet_mesh(surface, vertices=500, sizing="curvature")
+        with pytest.raises(ValueError, match="unknown sizing"):
+            vvm.hex_dominant(surface, particles=500, sizing="curvature")
 
     def test_bad_meshes(self):
         points = np.array([[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1.], [0.2, 0.2, -1]])
@@ -406,6 +410,11 @@ class TestDeterminism:
     def test_tet_mesh_lattice(self):
         self.check(lambda t: vvm.tet_mesh(data("fandisk.off"), method="bcc", vertices=1500, threads=t))
 
+    def test_tet_mesh_thickness(self):
+        # on fandisk: on heat_sink.off without features, GSM's flips depend on the handles'
+        # addresses (the order of Energy_guided_flips::cells_near), with any sizing
+        self.check(lambda t: vvm.tet_mesh(data("fandisk.off"), vertices=1500, sizing="thickness", threads=t))
+
     def test_optimize(self):
         source = meshio.read(data("ball_in_box.mesh"))
         self.check(lambda t: vvm.optimize(source, threads=t))
@@ -440,6 +449,15 @@ class TestSameAsCpp:
         assert (q["vertices"], q["tetrahedra"]) == (r["n_vertices"], r["n_tets"])
         assert abs(q["min_dihedral"] - r["theta_min"]) < 1e-9
         assert abs(mesh.info["boundary_hausdorff"] - r["boundary_hausdorff"]) < 1e-9
+
+    def test_tet_mesh_thickness(self):
+        mesh = vvm.tet_mesh(data("thin_walled/heat_sink.off"), vertices=2000, sizing="thickness", features_angle=0,
+                            threads=2)
+        q = vvm.quality(mesh)
+        r = run_vvm_mesh(["tet", data("thin_walled/heat_sink.off"), "-o", work("heat_sink.mesh"), "--vertices", "2000",
+                          "--sizing", "thickness", "--features-angle", "0", "--threads", "2"])
+        assert (q["vertices"], q["tetrahedra"]) == (r["n_vertices"], r["n_tets"])
+        assert abs(q["min_dihedral"] - r["theta_min"]) < 1e-9
 
     def test_hex_dominant(self):
         mesh = vvm.hex_dominant(data("cube.off"), particles=1000, threads=2)

@@ -6,13 +6,18 @@
 
 #include "optimizer_chain.h"
 
+#include <CGAL/Frame_fields/Closed_form_frame_field_3.h>
 #include <CGAL/Frame_fields/Constant_frame_field_3.h>
+#include <CGAL/Frame_fields/Scaled_frame_field_3.h>
 #include <CGAL/Frame_fields/IO/frame_field_text_format.h>
 #include <CGAL/Frame_fields/generate_cross_field_3.h>
 #include <CGAL/make_hex_dominant_mesh_3.h>
 #include <CGAL/make_lattice_mesh_3.h>
+#include <CGAL/Tetrahedral_lattice_meshing/internal/Domain_cross_field.h>
 
+#include <cmath>
 #include <fstream>
+#include <memory>
 #include <sstream>
 
 namespace vvm {
@@ -32,10 +37,28 @@ std::string particle_round_text(const TLM::Lattice_round_report& r)
 }
 
 /// calls `run(field)` with the field `name` names: identity, a frame-field file, or (cross)
-/// no field, for the packages' own boundary-aligned cross field
+/// no field, for the packages' own boundary-aligned cross field. With `sizing`, the field's
+/// frames scaled by it (`Scaled_frame_field_3`); the cross field is then made here, on a mesh
+/// of `domain` of edge `cross_size`.
 template <class Run>
-auto with_field(const std::string& name, const Run& run)
+auto with_field(const std::string& name, const Thickness_size* sizing, const Surface_domain& domain, double cross_size,
+                double time_limit, const Run& run)
 {
+  if(sizing != nullptr) {
+    typedef FF::Closed_form_frame_field_3<Kernel> Field;
+    Field field([](const Point&) { return Eigen::Matrix3d(Eigen::Matrix3d::Identity()); });
+    try {
+      if(name != "identity") {
+        const auto frames = std::make_shared<const FF::Discrete_frame_field_3<Kernel>>(
+            name == "cross" ? TLM::internal::domain_cross_field(domain, cross_size, time_limit) : read_frame_field_file(name));
+        field = Field([frames](const Point& p) { return frames->T(p); });
+      }
+    } catch(const std::invalid_argument& e) {
+      throw Input_error(e.what());
+    }
+    const FF::Scaled_frame_field_3<Field, Thickness_size> scaled(std::move(field), *sizing, 1.);
+    return run(&scaled);
+  }
   if(name == "cross") return run(static_cast<const FF::Discrete_frame_field_3<Kernel>*>(nullptr));
   if(name == "identity") {
     const FF::Constant_frame_field_3<Kernel> identity;
@@ -59,7 +82,10 @@ Volume_mesh lattice_tet_mesh(const Surface_source& input, const Tet_options& o, 
                                              [&stage](const TLM::Lattice_round_report& rr) {
                                                stage.report(particle_round_text(rr));
                                              }))));
-  Surface_c3t3 c3t3 = with_field(o.field, [&](const auto* field) {
+  const auto sizing = relative_sizing(o.sizing, in.surface);
+  // the cross field's mesh about as fine as a BCC lattice of the requested count
+  const double cross_size = o.size.size > 0 ? o.size.size : std::cbrt(2 * in.volume / double(o.size.vertices));
+  Surface_c3t3 c3t3 = with_field(o.field, sizing.get(), *in.domain, cross_size, o.time_limit, [&](const auto* field) {
     try {
       if(o.size.size > 0) {
         auto sized = TLM::parameters::edge_length(o.size.size, np);
@@ -112,7 +138,9 @@ Volume_mesh hex_dominant_mesh(const Surface_source& input, const Hex_dominant_op
                                  [&stage](const internal::TLM::Lattice_round_report& rr) {
                                    stage.report(internal::particle_round_text(rr));
                                  }))))));
-  Volume_mesh mesh = internal::with_field(o.field, [&](const auto* field) {
+  const auto sizing = internal::relative_sizing(o.sizing, in.surface);
+  const double cross_size = o.size.size > 0 ? o.size.size : std::cbrt(in.volume / double(o.size.vertices));
+  Volume_mesh mesh = internal::with_field(o.field, sizing.get(), *in.domain, cross_size, o.time_limit, [&](const auto* field) {
     try {
       if(o.size.size > 0) {
         auto sized = internal::TLM::parameters::edge_length(o.size.size, np);

@@ -17,6 +17,7 @@
 #include <Eigen/Core>
 
 #include <functional>
+#include <memory>
 #include <string>
 
 namespace vvm {
@@ -33,11 +34,12 @@ inline std::string gsm_round_text(const CGAL::GSM_mesh_optimization::Round_repor
 
 /// GSM with the run's threads, seed, time limit (0: none) and progress; `metric` (may be empty)
 /// is the target metric, `boundary_distance` the least bound of its boundary-fidelity guard;
-/// `freeze_boundary`: only interior vertices move. Returns whether the time limit stopped it.
+/// `freeze_boundary`: only interior vertices move; `sizing` (may be null) the target size.
+/// Returns whether the time limit stopped it.
 template <class C3T3, class MeshDomain>
 bool run_gsm(C3T3& c3t3, const MeshDomain& domain, int threads, unsigned int seed, double time_limit,
              const Progress& progress, const std::function<Eigen::Matrix3d(const Eigen::Vector3d&)>& metric = {},
-             double boundary_distance = 0, bool freeze_boundary = false)
+             double boundary_distance = 0, bool freeze_boundary = false, const Thickness_size* sizing = nullptr)
 {
   namespace GSM = CGAL::GSM_mesh_optimization;
   const Stage stage(progress, "gsm");
@@ -45,8 +47,9 @@ bool run_gsm(C3T3& c3t3, const MeshDomain& domain, int threads, unsigned int see
   auto np = GSM::parameters::freeze_boundary(freeze_boundary, GSM::parameters::boundary_distance(
       boundary_distance, GSM::parameters::number_of_threads(threads, CGAL::parameters::maximum_running_time(time_limit).visitor(
           [&stage](const GSM::Round_report& r) { stage.report(gsm_round_text(r)); }))));
-  const auto code = metric ? CGAL::gsm_optimize_mesh_3(c3t3, domain, GSM::parameters::metric_field(metric, np))
-                           : CGAL::gsm_optimize_mesh_3(c3t3, domain, np);
+  const auto code = metric   ? CGAL::gsm_optimize_mesh_3(c3t3, domain, GSM::parameters::metric_field(metric, np))
+                    : sizing ? CGAL::gsm_optimize_mesh_3(c3t3, domain, GSM::parameters::sizing_field(std::cref(*sizing), np))
+                             : CGAL::gsm_optimize_mesh_3(c3t3, domain, np);
   return code == CGAL::TIME_LIMIT_REACHED;
 }
 
@@ -59,7 +62,8 @@ inline bool is_optimizer_chain(const std::string& method)
 /// through their `time_limit`); returns whether the time limit stopped one
 template <class C3T3, class MeshDomain>
 bool run_optimizer_chain(C3T3& c3t3, const MeshDomain& domain, const Tet_options& o, const Progress& progress,
-                         const std::function<Eigen::Matrix3d(const Eigen::Vector3d&)>& metric = {})
+                         const std::function<Eigen::Matrix3d(const Eigen::Vector3d&)>& metric = {},
+                         const Thickness_size* sizing = nullptr)
 {
   namespace P = CGAL::parameters;
   const CGAL::GSM_mesh_optimization::internal::Time_limit limit(o.time_limit);
@@ -81,7 +85,7 @@ bool run_optimizer_chain(C3T3& c3t3, const MeshDomain& domain, const Tet_options
     stage.report("CGAL::exude_mesh_3");
     return CGAL::exude_mesh_3(c3t3, P::sliver_bound = 0, P::time_limit = limit.remaining()) == CGAL::TIME_LIMIT_REACHED;
   }
-  return run_gsm(c3t3, domain, o.threads, o.seed, limit.remaining(), progress, metric);
+  return run_gsm(c3t3, domain, o.threads, o.seed, limit.remaining(), progress, metric, 0., false, sizing);
 }
 
 // the units of the front end that instantiate other domains

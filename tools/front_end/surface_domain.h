@@ -13,6 +13,8 @@
 #include <CGAL/Frame_fields/IO/frame_field_text_format.h>
 #include <CGAL/GSM_mesh_optimization/IO/read_closed_surface.h>
 #include <CGAL/GSM_mesh_optimization/mesh_with_vertex_count.h>
+#include <CGAL/Local_thickness_3.h>
+#include <CGAL/Thickness_sizing_field_3.h>
 
 // make_mesh_3.h first: with CGAL_LINKED_WITH_TBB, CGAL 5.5.1's optimizer headers
 // rely on TBB headers that only the mesher includes.
@@ -146,32 +148,58 @@ inline void check_mesh_size(const Mesh_size& s, const char* count_name = "vertic
     throw Input_error(std::string("the number of ") + count_name + " must be between 100 and 2e7");
 }
 
-/// make_mesh_3 with edge, facet and cell sizes `s`, facet distance s/10, no optimizer (seeded)
+typedef CGAL::Thickness_sizing_field_3<Kernel> Thickness_size;
+
+/// `sizing` of the options: nothing (uniform), or the thickness sizing of the surface, relative
+/// to its median over the surface
+inline std::shared_ptr<const Thickness_size> relative_sizing(const std::string& sizing, const Surface_mesh& surface)
+{
+  if(sizing == "uniform") return nullptr;
+  if(sizing != "thickness") throw Input_error("unknown sizing '" + sizing + "' (known: uniform, thickness)");
+  try {
+    const Thickness_size size{CGAL::Local_thickness_3<Kernel>(surface)};
+    return std::make_shared<const Thickness_size>(size.scaled(1 / size.typical_size()));
+  } catch(const std::invalid_argument& e) {
+    throw Input_error(e.what());
+  }
+}
+
+/// make_mesh_3 with edge, facet and cell sizes `s` (times `relative`, if given), facet distance
+/// a tenth of them, no optimizer (seeded)
 template <class C3T3, class MeshDomain>
-C3T3 mesh_with_size(const MeshDomain& domain, double s, unsigned int seed)
+C3T3 mesh_with_size(const MeshDomain& domain, double s, unsigned int seed, const Thickness_size* relative = nullptr)
 {
   namespace P = CGAL::parameters;
   CGAL::get_default_random() = CGAL::Random(seed);
-  CGAL::Mesh_criteria_3<typename C3T3::Triangulation> criteria(
-      P::edge_size = s, P::facet_angle = 25, P::facet_size = s, P::facet_distance = s / 10.,
-      P::cell_radius_edge_ratio = 3, P::cell_size = s);
+  typedef CGAL::Mesh_criteria_3<typename C3T3::Triangulation> Criteria;
+  if(relative != nullptr) {
+    const Thickness_size size = relative->scaled(s), distance = relative->scaled(s / 10);
+    Criteria criteria(P::edge_size = size, P::facet_angle = 25, P::facet_size = size, P::facet_distance = distance,
+                      P::cell_radius_edge_ratio = 3, P::cell_size = size);
+    return CGAL::make_mesh_3<C3T3>(domain, criteria, P::no_perturb(), P::no_exude());
+  }
+  Criteria criteria(P::edge_size = s, P::facet_angle = 25, P::facet_size = s, P::facet_distance = s / 10.,
+                    P::cell_radius_edge_ratio = 3, P::cell_size = s);
   return CGAL::make_mesh_3<C3T3>(domain, criteria, P::no_perturb(), P::no_exude());
 }
 
-/// the make_mesh_3 mesh of the requested size or vertex count (within 5%)
+/// the make_mesh_3 mesh of the requested size or vertex count (within 5%); with `relative`, the
+/// size is that field's, scaled
 template <class C3T3, class MeshDomain>
-C3T3 initial_mesh(const MeshDomain& domain, double volume, const Mesh_size& size, unsigned int seed, const Stage& stage)
+C3T3 initial_mesh(const MeshDomain& domain, double volume, const Mesh_size& size, unsigned int seed, const Stage& stage,
+                  const Thickness_size* relative = nullptr)
 {
+  const std::string what = relative ? "median size " : "edge size ";
   if(size.size > 0) {
-    stage.report("edge size " + std::to_string(size.size));
-    C3T3 c3t3 = mesh_with_size<C3T3>(domain, size.size, seed);
+    stage.report(what + std::to_string(size.size));
+    C3T3 c3t3 = mesh_with_size<C3T3>(domain, size.size, seed, relative);
     if(c3t3.number_of_cells_in_complex() == 0) throw Input_error("the size is too large: the mesh has no cell");
     return c3t3;
   }
   int attempt = 0;
   auto mesh = [&](double s) {
-    stage.report("attempt " + std::to_string(++attempt) + ", edge size " + std::to_string(s));
-    return mesh_with_size<C3T3>(domain, s, seed);
+    stage.report("attempt " + std::to_string(++attempt) + ", " + what + std::to_string(s));
+    return mesh_with_size<C3T3>(domain, s, seed, relative);
   };
   try {
     return CGAL::GSM_mesh_optimization::mesh_with_vertex_count(mesh, size.vertices,

@@ -52,19 +52,24 @@ Volume_mesh tet_mesh(const Surface_source& input, const Tet_options& o, const Pr
   }
   if(!internal::is_optimizer_chain(o.method))
     throw Input_error("unknown method '" + o.method + "' (known: gsm, odt+gsm, perturb+exude, bcc, fcc)");
+  if(image && o.sizing != "uniform") throw Input_error("the sizing " + o.sizing + " needs a surface, not an image");
   if(image) return internal::image_tet_mesh(input.path, o, progress, r);
   const auto metric = internal::metric_of_field(o.field);
   const auto threads = internal::thread_limit(o.threads);
   internal::Surface_input in(input, o.features_angle);
+  if(metric && o.sizing != "uniform") throw Input_error("a frame-field file is GSM's metric: it cannot go with a sizing");
   internal::Surface_c3t3 c3t3;
+  std::shared_ptr<const internal::Thickness_size> sizing;
   {
     const internal::Stage stage(progress, "make_mesh_3");
-    c3t3 = internal::initial_mesh<internal::Surface_c3t3>(*in.domain, in.volume, o.size, o.seed, stage);
+    if(o.sizing != "uniform") stage.report("the surface's thickness");
+    sizing = internal::relative_sizing(o.sizing, in.surface);
+    c3t3 = internal::initial_mesh<internal::Surface_c3t3>(*in.domain, in.volume, o.size, o.seed, stage, sizing.get());
     r.mesh_time = stage.time();
   }
   CGAL::Real_timer timer;
   timer.start();
-  r.time_limit_reached = internal::run_optimizer_chain(c3t3, *in.domain, o, progress, metric);
+  r.time_limit_reached = internal::run_optimizer_chain(c3t3, *in.domain, o, progress, metric, sizing.get());
   r.optimize_time = timer.time();
   return internal::to_volume_mesh(c3t3);
 }

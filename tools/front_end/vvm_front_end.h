@@ -76,6 +76,10 @@ struct Tet_options
   Mesh_size size;
   double features_angle = 60;  ///< degrees; 0: no feature protected (surfaces only)
   std::string field = "cross"; ///< cross, identity, or a frame-field file (lattices; a file is GSM's metric too)
+  /// uniform, or thickness: the size follows the surface's walls and gaps, 3 cells across
+  /// (CGAL::Thickness_sizing_field_3; surfaces only), its median over the surface being the
+  /// size (or the one that gives the vertex count)
+  std::string sizing = "uniform";
   int threads = 0;             ///< 0: all cores
   unsigned int seed = 0;
   double time_limit = 0;       ///< seconds of the optimizer or the lattice (`maximum_running_time`); 0: none
@@ -89,6 +93,7 @@ struct Hex_dominant_options
   double boundary_distance = 0; ///< the boundary refinement's distance; 0: none
   double features_angle = 60;
   std::string field = "cross";
+  std::string sizing = "uniform"; ///< uniform, or thickness: the field's frames scaled as `Tet_options::sizing`
   int threads = 0;
   unsigned int seed = 0;
   double time_limit = 0;       ///< seconds of make_hex_dominant_mesh_3 (field included); 0: none

@@ -232,11 +232,12 @@ py::dict result(const vvm::Volume_mesh& mesh, const vvm::Run_report& report)
 }
 
 py::dict tet_mesh(const py::object& surface, const std::string& method, std::size_t vertices, double size,
-                  double features_angle, const std::string& field, int threads, unsigned int seed,
-                  double time_limit, const py::object& progress)
+                  double features_angle, const std::string& field, const std::string& sizing, int threads,
+                  unsigned int seed, double time_limit, const py::object& progress)
 {
   const vvm::Surface_source source = surface_source(surface);
   vvm::Tet_options o;
+  o.sizing = sizing;
   o.time_limit = time_limit;
   o.method = method;
   o.size = mesh_size(size, vertices);
@@ -251,11 +252,13 @@ py::dict tet_mesh(const py::object& surface, const std::string& method, std::siz
 }
 
 py::dict hex_dominant(const py::object& surface, std::size_t particles, double size, double q_bound,
-                      double boundary_distance, double features_angle, const std::string& field, int threads,
-                      unsigned int seed, double time_limit, const py::object& progress)
+                      double boundary_distance, double features_angle, const std::string& field,
+                      const std::string& sizing, int threads, unsigned int seed, double time_limit,
+                      const py::object& progress)
 {
   const vvm::Surface_source source = surface_source(surface);
   vvm::Hex_dominant_options o;
+  o.sizing = sizing;
   o.time_limit = time_limit;
   o.size = mesh_size(size, particles);
   o.quality_bound = q_bound;
@@ -427,9 +430,9 @@ PYBIND11_MODULE(_vvm, m)
   m.attr("__version__") = VVM_VERSION;
   using py::arg;
   m.def("tet_mesh", &tet_mesh, arg("surface"), arg("method"), arg("vertices"), arg("size"), arg("features_angle"),
-        arg("field"), arg("threads"), arg("seed"), arg("time_limit"), arg("progress"));
+        arg("field"), arg("sizing"), arg("threads"), arg("seed"), arg("time_limit"), arg("progress"));
   m.def("hex_dominant", &hex_dominant, arg("surface"), arg("particles"), arg("size"), arg("q_bound"),
-        arg("boundary_distance"), arg("features_angle"), arg("field"), arg("threads"), arg("seed"), arg("time_limit"),
+        arg("boundary_distance"), arg("features_angle"), arg("field"), arg("sizing"), arg("threads"), arg("seed"), arg("time_limit"),
         arg("progress"));
   m.def("optimize", &optimize, arg("points"), arg("cell_types"), arg("connectivity"), arg("labels"),
         arg("features_angle"), arg("fixed_boundary"), arg("boundary_distance"), arg("threads"), arg("seed"),

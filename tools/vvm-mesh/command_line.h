@@ -39,7 +39,8 @@ inline const char* main_usage =
 inline const char* tet_usage =
     "usage: vvm-mesh tet INPUT -o OUT [--method gsm|odt+gsm|perturb+exude|bcc|fcc]\n"
     "                    [--size H | --vertices N] [--features-angle DEG] [--field cross|identity|FILE]\n"
-    "                    [--threads N] [--seed N] [--time-limit S] [--json FILE] [--quiet]\n"
+    "                    [--sizing uniform|thickness] [--threads N] [--seed N] [--time-limit S]\n"
+    "                    [--json FILE] [--quiet]\n"
     "  INPUT               a closed triangle surface (OFF, OBJ, PLY, STL, ...), or a labelled 3D image\n"
     "                      (.inr, .inr.gz: each non-zero label a subdomain)\n"
     "  -o OUT              the mesh: .mesh, .msh or .vtu\n"
@@ -52,6 +53,9 @@ inline const char* tet_usage =
     "  --features-angle D  protect the edges of the surface sharper than D degrees (default 60; 0: none)\n"
     "  --field F           cross (default): the boundary-aligned cross field; identity; or a frame-field\n"
     "                      file (vvm-mesh field): the lattice's field, GSM's target metric B^T B\n"
+    "  --sizing S          uniform (default), or thickness: the size follows the surface's walls and\n"
+    "                      gaps, 3 cells across, graded by 0.3 (surfaces); --size is then its median\n"
+    "                      over the surface, --vertices still the count\n"
     "  --threads N         at most N threads (default: all cores)\n"
     "  --seed N            random seed (default 0): the same seed gives the same mesh\n"
     "  --time-limit S      stop the optimizer (or the lattice) after S seconds, with a valid mesh\n"
@@ -63,7 +67,7 @@ inline const char* tet_usage =
 inline const char* hexdom_usage =
     "usage: vvm-mesh hexdom INPUT -o OUT [--particles N | --size H] [--q-bound Q] [--boundary-distance D]\n"
     "                       [--features-angle DEG] [--field cross|identity|FILE] [--threads N] [--seed N]\n"
-    "                       [--time-limit S] [--json FILE] [--quiet]\n"
+    "                       [--sizing uniform|thickness] [--time-limit S] [--json FILE] [--quiet]\n"
     "  INPUT               a closed triangle surface (OFF, OBJ, PLY, STL, ...)\n"
     "  -o OUT              the mesh: .mesh, .msh or .vtu (hexahedra, prisms, pyramids, tetrahedra)\n"
     "  --particles N       the number of cubic-lattice particles sought (default 30000)\n"
@@ -74,6 +78,7 @@ inline const char* hexdom_usage =
     "                      refinement)\n"
     "  --features-angle D  sharp edges of the surface (default 60; 0: none)\n"
     "  --field F           cross (default), identity, or a frame-field file\n"
+    "  --sizing S          uniform (default), or thickness: the field's frames scaled as for tet\n"
     "  --time-limit S      stop after S seconds (field, particles, merging), with a valid mesh whose\n"
     "                      unmerged tets stay tetrahedra (default 0: none)\n"
     "  --threads N, --seed N, --json FILE, --quiet  as for tet\n";
@@ -180,9 +185,10 @@ inline Arguments parse(int argc, const char* const* argv)
     return a;
   }
   static const std::map<std::string, std::vector<std::string>> options{
-      {"tet", {"--method", "--size", "--vertices", "--features-angle", "--field", "--threads", "--seed", "--time-limit"}},
+      {"tet", {"--method", "--size", "--vertices", "--features-angle", "--field", "--sizing", "--threads", "--seed",
+               "--time-limit"}},
       {"hexdom", {"--particles", "--size", "--q-bound", "--boundary-distance", "--features-angle", "--field",
-                  "--threads", "--seed", "--time-limit"}},
+                  "--sizing", "--threads", "--seed", "--time-limit"}},
       {"optimize", {"--features-angle", "--boundary-distance", "--threads", "--seed", "--time-limit"}},
       {"quality", {}},
       {"field", {"--size", "--vertices", "--features-angle", "--seed", "--time-limit"}}};
@@ -247,6 +253,7 @@ inline vvm::Tet_options tet_options(const Arguments& a)
   o.size.vertices = count(a, "--vertices", o.size.vertices);
   o.features_angle = number<double>(a, "--features-angle", o.features_angle);
   o.field = text(a, "--field", o.field);
+  o.sizing = text(a, "--sizing", o.sizing);
   o.threads = number<int>(a, "--threads", 0);
   o.seed = seed(a);
   o.time_limit = time_limit(a);
@@ -263,6 +270,7 @@ inline vvm::Hex_dominant_options hex_dominant_options(const Arguments& a)
   o.boundary_distance = number<double>(a, "--boundary-distance", 0.);
   o.features_angle = number<double>(a, "--features-angle", o.features_angle);
   o.field = text(a, "--field", o.field);
+  o.sizing = text(a, "--sizing", o.sizing);
   o.threads = number<int>(a, "--threads", 0);
   o.seed = seed(a);
   o.time_limit = time_limit(a);

@@ -29,15 +29,17 @@ namespace CGAL {
  * A sizing field from the local thickness of a domain: at a sample \f$ s \f$ of the surface
  * whose thickness or gap (the smaller) is \f$ w_s \f$, the size is
  * \f$ h_s = \min(h_{max}, \max(h_{min}, w_s / k)) \f$, \f$ k \f$ cells across, on the whole
- * segment \f$ \sigma_s \f$ across the wall (the sample alone if the gap is the smaller);
- * everywhere the size is \f$ h(x) = \min(h_{max}, \min_s (h_s + g \, d(x, \sigma_s))) \f$, so
- * that it grows by at most the gradation \f$ g \f$ times the distance. \f$ h \f$ is computed on a regular grid (the cones
+ * segment \f$ \sigma_s \f$ across the wall (the sample alone if the gap is the smaller),
+ * thickened by the samples' spacing \f$ r \f$ (a sample stands for the surface around it);
+ * everywhere the size is \f$ h(x) = \min(h_{max}, \min_s (h_s + g \max(0, d(x, \sigma_s) - r))) \f$,
+ * so that it grows by at most the gradation \f$ g \f$ times the distance. \f$ h \f$ is computed on a regular grid (the cones
  * propagated from node to node, as a chamfer distance) and interpolated trilinearly in between;
  * the bound on its growth holds between points a few grid cells apart.
  *
  * It is a model of Mesh_3's sizing field (`operator()(p, dimension, index)`), to be passed as
  * `edge_size`, `facet_size` and `cell_size` of `Mesh_criteria_3`, and a callable `double(p)`,
- * to be passed as GSM's `sizing_field`. Copies share the grid.
+ * to be passed as GSM's `sizing_field` (and, scaled, as the lattice meshers' frame field's
+ * scale: `Frame_fields::Scaled_frame_field_3`). Copies share the grid.
  *
  * \tparam GeomTraits the traits of the `Local_thickness_3` it is made from
  */
@@ -139,10 +141,19 @@ public:
     seed_cones(*grid, thickness, sample_sizes);
     propagate_cones(*grid);
     grid_ = grid;
+    std::vector<double> on_surface;
+    for(const auto& s : thickness.samples()) on_surface.push_back(grid_->interpolate(s.point.x(), s.point.y(), s.point.z()));
+    std::nth_element(on_surface.begin(), on_surface.begin() + std::ptrdiff_t(on_surface.size() / 2), on_surface.end());
+    typical_size_ = on_surface[on_surface.size() / 2];
   }
 
-  /// the size at `p`
-  double operator()(const Point_3& p) const { return scale_ * grid_->interpolate(p.x(), p.y(), p.z()); }
+  /// the size at `p`, a `Point_3` or any point whose coordinates are `p[0]`, `p[1]`, `p[2]`
+  /// (e.g. `Eigen::Vector3d`, as GSM's `sizing_field` is called)
+  template <class Point>
+  double operator()(const Point& p) const
+  {
+    return scale_ * grid_->interpolate(CGAL::to_double(p[0]), CGAL::to_double(p[1]), CGAL::to_double(p[2]));
+  }
 
   /// the size at `p`, as Mesh_3's sizing fields are called
   template <class Index>
@@ -161,6 +172,9 @@ public:
     return f;
   }
 
+  /// the median size over the surface's samples: what a uniform size of the same density is
+  /// compared with, e.g. to scale the field to a uniform size \f$ s \f$ by `scaled(s / typical_size())`
+  double typical_size() const { return scale_ * typical_size_; }
   double cells_across() const { return cells_across_; }
   double minimum_size() const { return scale_ * min_size_; }
   double maximum_size() const { return scale_ * max_size_; }
@@ -202,41 +216,47 @@ private:
     }
   };
 
-  // each sample's cone, at the nodes of the 4x4x4 blocks around the points of its apex: the
-  // segment across the wall when the size comes from the thickness (the wall's middle is as
-  // thin as its sides), the sample alone when it comes from the gap
+  // each sample's cone, at the nodes around the points of its apex: the segment across the
+  // wall when the size comes from the thickness (the wall's middle is as thin as its sides), the
+  // sample alone when it comes from the gap. A sample stands for the surface around it, so the
+  // apex is thickened by the samples' spacing: the cones of neighbouring samples overlap, and
+  // the size does not rise between them
   void seed_cones(Grid& grid, const Local_thickness_3<Geom_traits>& thickness,
                   const std::vector<double>& sample_sizes) const
   {
     const auto& samples = thickness.samples();
+    const double radius = thickness.sample_spacing();
     for(std::size_t s = 0; s < samples.size(); ++s) {
       if(!(sample_sizes[s] < max_size_)) continue;
       const auto& sample = samples[s];
       const double across = sample.thickness <= sample.gap ? sample.thickness : 0.;
-      const int steps = int(std::ceil((std::min)(32., across / grid.spacing)));
+      const int steps = int(std::ceil((std::min)(32., across / (std::max)(grid.spacing, radius))));
       for(int step = 0; step <= steps; ++step) {
         const double depth = steps == 0 ? 0. : across * step / steps;
         const double p[3] = {sample.point.x() - depth * sample.normal.x(), sample.point.y() - depth * sample.normal.y(),
                              sample.point.z() - depth * sample.normal.z()};
-        seed_cone(grid, p, sample_sizes[s]);
+        seed_cone(grid, p, radius, sample_sizes[s]);
       }
     }
   }
 
-  void seed_cone(Grid& grid, const double (&p)[3], double size) const
+  // size + g max(0, |x - p| - radius) at the nodes x of the block around the ball
+  void seed_cone(Grid& grid, const double (&p)[3], double radius, double size) const
   {
+    const long reach = long(std::ceil(radius / grid.spacing)) + 1;
     long first[3];
-    for(int a = 0; a < 3; ++a) first[a] = long(std::floor((p[a] - grid.origin[a]) / grid.spacing)) - 1;
-    for(long k = first[2]; k < first[2] + 4; ++k)
-      for(long j = first[1]; j < first[1] + 4; ++j)
-        for(long i = first[0]; i < first[0] + 4; ++i) {
+    for(int a = 0; a < 3; ++a) first[a] = long(std::floor((p[a] - grid.origin[a]) / grid.spacing)) - reach + 1;
+    for(long k = first[2]; k < first[2] + 2 * reach; ++k)
+      for(long j = first[1]; j < first[1] + 2 * reach; ++j)
+        for(long i = first[0]; i < first[0] + 2 * reach; ++i) {
           if(i < 0 || j < 0 || k < 0 || i >= long(grid.size[0]) || j >= long(grid.size[1]) || k >= long(grid.size[2]))
             continue;
           const double dx = grid.origin[0] + double(i) * grid.spacing - p[0],
                        dy = grid.origin[1] + double(j) * grid.spacing - p[1],
                        dz = grid.origin[2] + double(k) * grid.spacing - p[2];
+          const double beyond = (std::max)(0., std::sqrt(dx * dx + dy * dy + dz * dz) - radius);
           float& value = grid.values[grid.index(std::size_t(i), std::size_t(j), std::size_t(k))];
-          value = (std::min)(value, float(size + gradation_ * std::sqrt(dx * dx + dy * dy + dz * dz)));
+          value = (std::min)(value, float(size + gradation_ * beyond));
         }
   }
 
@@ -275,7 +295,7 @@ private:
     }
   }
 
-  double cells_across_ = 3, min_size_ = 0, max_size_ = 0, gradation_ = 0.3, spacing_ = 0, scale_ = 1;
+  double cells_across_ = 3, min_size_ = 0, max_size_ = 0, gradation_ = 0.3, spacing_ = 0, scale_ = 1, typical_size_ = 0;
   std::shared_ptr<const Grid> grid_;
 };
 

@@ -256,7 +256,7 @@ def _from_mesh(mesh):
 
 
 def tet_mesh(surface, method="gsm", vertices=None, size=None, features_angle=None, field=None, threads=None, seed=0,
-             progress=None, time_limit=None):
+             progress=None, time_limit=None, sizing="uniform"):
     """A tetrahedral mesh of a closed surface or a labelled 3D image.
 
     ``surface``: a file (OFF, OBJ, PLY, STL, ...; or a labelled image, .inr / .inr.gz, each
@@ -269,6 +269,10 @@ def tet_mesh(surface, method="gsm", vertices=None, size=None, features_angle=Non
     60) are kept as feature curves; 0 keeps none. ``field``: ``"cross"`` (the
     boundary-aligned cross field), ``"identity"``, a frame-field file or a
     :class:`FrameField`; for lattices, and GSM's target metric when a file or FrameField.
+    ``sizing``: ``"uniform"``, or ``"thickness"``: the size follows the surface's walls and gaps,
+    three cells across, growing away from them by at most 0.3 times the distance (surfaces
+    only); ``size`` is then its median over the surface, ``vertices`` still the count; for
+    lattices it scales the field's frames.
     ``threads``: None or 0 for all cores. ``seed``: the same seed and threads give the same mesh.
     ``time_limit``: seconds of the optimizer (or the lattice), None for none: it stops with a
     valid mesh and ``mesh.info["time_limit_reached"]`` true (make_mesh_3 is not counted).
@@ -284,13 +288,13 @@ def tet_mesh(surface, method="gsm", vertices=None, size=None, features_angle=Non
     count, edge = _size(vertices, size, "vertices", 10000)
     source = _surface(surface)
     with _Field_file(field) as field_path:
-        arrays = _vvm.tet_mesh(source, str(method), count, edge, _angle(features_angle), field_path,
+        arrays = _vvm.tet_mesh(source, str(method), count, edge, _angle(features_angle), field_path, str(sizing),
                                _threads(threads), _seed(seed), _time_limit(time_limit), _progress(progress))
     return _to_meshio(arrays)
 
 
 def hex_dominant(surface, particles=None, size=None, q_bound=0.5, boundary_distance=0.0, features_angle=None,
-                 field=None, threads=None, seed=0, progress=None, time_limit=None):
+                 field=None, threads=None, seed=0, progress=None, time_limit=None, sizing="uniform"):
     """A hex-dominant mesh of a closed surface: hexahedra, prisms, pyramids and tetrahedra.
 
     Particles form a cubic lattice aligned with ``field`` (default the boundary-aligned cross
@@ -298,7 +302,7 @@ def hex_dominant(surface, particles=None, size=None, q_bound=0.5, boundary_dista
     prisms and pyramids whose quality is at least ``q_bound`` (in [0, 1]).
     ``particles`` (default 30000) or ``size`` (the lattice's edge length);
     ``boundary_distance``: the boundary refinement's distance (0: none). ``surface``,
-    ``features_angle``, ``field``, ``threads``, ``seed``, ``progress`` as in :func:`tet_mesh`.
+    ``features_angle``, ``field``, ``sizing``, ``threads``, ``seed``, ``progress`` as in :func:`tet_mesh`.
     ``time_limit``: seconds (field, particles, merging), None for none: the tets not merged by
     then stay tetrahedra and ``mesh.info["time_limit_reached"]`` is true.
 
@@ -313,7 +317,7 @@ def hex_dominant(surface, particles=None, size=None, q_bound=0.5, boundary_dista
     source = _surface(surface)
     with _Field_file(field) as field_path:
         arrays = _vvm.hex_dominant(source, count, edge, float(q_bound), float(boundary_distance),
-                                   _angle(features_angle), field_path, _threads(threads), _seed(seed),
+                                   _angle(features_angle), field_path, str(sizing), _threads(threads), _seed(seed),
                                    _time_limit(time_limit), _progress(progress))
     return _to_meshio(arrays)
 
