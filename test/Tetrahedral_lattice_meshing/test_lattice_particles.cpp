@@ -4,9 +4,11 @@
 // lattice_particles_3 and make_lattice_mesh_3 on domains: the particle kinds on the cube
 // and the sphere, the independence of the number of threads, the multiresolution start,
 // the polishing bound, the complex of make_lattice_mesh_3 (validity, labels, boundary,
-// features, quality) and the refusal of bad inputs.
+// features, quality; a thin slab two cells across) and the refusal of bad inputs.
 
 #include "lattice_test_support.h"
+
+#include <CGAL/Polygon_mesh_processing/orientation.h>
 
 // ---------------------------------------------------------------------------------------------
 // lattice_particles_3 on the cube [-1, 1]^3 with the identity field, BCC, 1500 particles,
@@ -546,6 +548,61 @@ void test_lattice_mesh_on_cube()
 }
 
 // ---------------------------------------------------------------------------------------------
+// 6a. A thin slab, two lattice cells across (issue #44): too few layers for the lattice's own
+// tets at the walls, which the last stage (the polishing, with splits) repairs: no tet under 10
+// degrees, BCC and FCC, the slab along the axes (the field aligned) and turned (not aligned).
+
+void test_lattice_mesh_of_thin_slab()
+{
+  const double thickness = 0.2;
+  for(const double turn : {0., 0.5}) { // radians about (1, 1, 0)
+    const Eigen::Matrix3d R = rotation(turn, Eigen::Vector3d(1, 1, 0));
+    // the box [-1, 1]^2 x [-t/2, t/2], turned: corner i + 2j + 4k at (+-1, +-1, +-t/2), the
+    // + where i, j, k are 1; two outward triangles a face
+    Surface_mesh slab;
+    std::vector<Surface_mesh::Vertex_index> v;
+    for(int k = 0; k < 8; ++k) {
+      const Eigen::Vector3d x = R * Eigen::Vector3d(k & 1 ? 1 : -1, k & 2 ? 1 : -1, (k & 4 ? 0.5 : -0.5) * thickness);
+      v.push_back(slab.add_vertex(Point(x[0], x[1], x[2])));
+    }
+    for(const std::array<int, 4>& q : {std::array<int, 4>{{0, 2, 3, 1}}, {{4, 5, 7, 6}}, {{0, 1, 5, 4}},
+                                       {{2, 6, 7, 3}}, {{0, 4, 6, 2}}, {{1, 3, 7, 5}}}) {
+      slab.add_face(v[std::size_t(q[0])], v[std::size_t(q[1])], v[std::size_t(q[2])]);
+      slab.add_face(v[std::size_t(q[0])], v[std::size_t(q[2])], v[std::size_t(q[3])]);
+    }
+    VVM_CHECK(CGAL::is_closed(slab) && CGAL::Polygon_mesh_processing::is_outward_oriented(slab));
+    Cube_domain domain(slab);
+    domain.detect_features(60);
+    for(TLM::Lattice_type type : {TLM::Lattice_type::BCC, TLM::Lattice_type::FCC}) {
+      Cube_c3t3 c3t3;
+      try {
+        c3t3 = CGAL::make_lattice_mesh_3<Cube_c3t3>(domain, Constant_field(),
+            TLM::parameters::lattice(type, TLM::parameters::edge_length(thickness / 2,
+                CGAL::parameters::random_seed(3u))));
+      } catch(const std::exception& e) {
+        std::cerr << "    make_lattice_mesh_3 (turn " << turn << ", type " << int(type) << ") threw: " << e.what() << "\n";
+        VVM_CHECK(!"make_lattice_mesh_3 throws on the thin slab");
+        continue;
+      }
+      const CGAL::GSM_mesh_optimization::Mesh_quality_statistics q = CGAL::GSM_mesh_optimization::mesh_quality_statistics(c3t3);
+      std::cerr << "    slab turned " << turn << ", " << (type == TLM::Lattice_type::BCC ? "BCC" : "FCC") << ": "
+                << c3t3.number_of_cells_in_complex() << " tets, min dihedral " << q.min_dihedral_angle << "\n";
+      // the combinatorics (not the regular property: the polishing's moves and flips do not keep it)
+      // and no inverted cell
+      const Cube_tr& tr = c3t3.triangulation();
+      VVM_CHECK(tr.tds().is_valid());
+      std::size_t not_positive = 0;
+      for(auto c : tr.finite_cell_handles())
+        not_positive += CGAL::orientation(tr.point(c, 0).point(), tr.point(c, 1).point(), tr.point(c, 2).point(),
+                                          tr.point(c, 3).point()) != CGAL::POSITIVE;
+      VVM_CHECK_EQUAL(not_positive, std::size_t(0));
+      VVM_CHECK(c3t3.number_of_cells_in_complex() > 100);
+      VVM_CHECK(q.min_dihedral_angle >= 10);
+    }
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
 // 6b. A stretched field: the lattice is regular in the field's space only, and so are the
 // tets: Delaunay in the metric B^T B (the Euclidean Delaunay tets of an FCC lattice three
 // times longer along x are slivers there).
@@ -689,6 +746,7 @@ int main(int argc, char** argv)
       {"multiresolution_choice", test_multiresolution_choice},
       {"polishing_bound", test_polishing_bound},
       {"lattice_mesh_on_cube", test_lattice_mesh_on_cube},
+      {"lattice_mesh_of_thin_slab", test_lattice_mesh_of_thin_slab},
       {"lattice_mesh_in_stretched_field", test_lattice_mesh_in_stretched_field},
       {"bad_inputs", test_bad_inputs}});
 }

@@ -258,7 +258,8 @@ gsm_optimize(C3T3& c3t3, const MeshDomain* domain, bool boundary_fixed, const Na
  * polyhedral domains), staying on their surface patch; vertices on feature
  * curves move along the curve (`construct_point_on_curve()`); corners never
  * move. A boundary vertex moves only where its surface facets stray from the
- * surface (measured along their normals with `Construct_intersection`) no
+ * surface (measured along their normals with `Construct_intersection` and
+ * `Do_intersect_surface`) no
  * further than the initial mesh's facets around it did, or than most of them,
  * so that the boundary stays about as close to the surface. No cell is ever
  * inverted. Flips never cross a surface facet, a feature edge or a subdomain

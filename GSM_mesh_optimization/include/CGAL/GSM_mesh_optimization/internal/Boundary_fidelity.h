@@ -38,14 +38,16 @@
 // it, and a moved facet that comes within a fifth of its bound on the first
 // must keep its bound on the second too. A moved facet is only tested against its
 // bounds: a point whose normal segment as long as the bound meets the surface is
-// close enough (one short query in place of two or more of the measure, which
-// looks for the nearest of the intersections within the full reach: the domain's
-// intersection queries went from 40% of GSM's time on bunny00 to a quarter).
-// Everything is computed at the start; later
+// close enough: one short query in place of two or more of the measure, which
+// looks for the nearest of the intersections within the full reach, and a
+// predicate (`Do_intersect_surface`), which costs a fraction of a construction.
+// Everything is computed at the start (the facets in parallel); later
 // calls only read it and the domain, so they are thread-safe.
 
 #ifndef CGAL_GSM_MESH_OPTIMIZATION_INTERNAL_BOUNDARY_FIDELITY_H
 #define CGAL_GSM_MESH_OPTIMIZATION_INTERNAL_BOUNDARY_FIDELITY_H
+
+#include <CGAL/GSM_mesh_optimization/internal/Parallel_for.h>
 
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
@@ -105,12 +107,16 @@ public:
         e.t[k] = tr.geom_traits().construct_point_3_object()(tr.point(e.v[k]));
       }
       e.patch = c3t3.surface_patch_index(*f);
-      e.d[0] = deviation(e.t, e.patch, coarse_grid);
-      e.d[1] = (std::max)(e.d[0], deviation(e.t, e.patch, fine_grid, coarse_grid));
-      for(int g = 0; g < 2; ++g) deviations[g].push_back(e.d[g]);
       facets.push_back(e);
     }
     if(facets.empty()) return;
+    parallel_for_each_index(facets.size(), [&](std::size_t i) {
+      Initial_facet& e = facets[i];
+      e.d[0] = deviation(e.t, e.patch, coarse_grid);
+      e.d[1] = (std::max)(e.d[0], deviation(e.t, e.patch, fine_grid, coarse_grid));
+    }, 64);
+    for(const Initial_facet& e : facets)
+      for(int g = 0; g < 2; ++g) deviations[g].push_back(e.d[g]);
 
     std::vector<Triangle_3> triangles;
     for(const Initial_facet& e : facets) triangles.emplace_back(e.t[0], e.t[1], e.t[2]);
@@ -188,13 +194,24 @@ public:
   /// the largest distance from the points of the grid of `t` with `m` subdivisions (and its
   /// centroid) to the patch `patch` along the normal of `t`, within half its longest edge (far
   /// beyond a chord's sag, short of the far side of thin parts); a point whose normal line meets
-  /// another patch first, or none (beside a feature edge), does not count. With `known`, a
+  /// another patch first, or none (beside a feature edge), or within the rounding noise (where
+  /// the centroid is), does not count. With `known`, a
   /// divisor of `m`, the points of the grid with `known` subdivisions are skipped but for the
   /// centroid: the caller has measured them
   double deviation(const Triangle& t, const Surface_patch_index& patch, int m, int known = 0) const
   {
     double d = 0;
+    bool is_centroid = true, centroid_on_surface = false;
     for_each_grid_point(t, m, known, [&](const Bare_point& s, const Vector_3& reach) {
+      // a facet whose centroid lies on the surface (up to `noise_share`) lies in a flat part of it,
+      // most often: its points are tried with a predicate first, which costs less
+      if(is_centroid || centroid_on_surface) {
+        const Vector_3 noise = reach * noise_share;
+        const bool on_surface = bool(domain_->do_intersect_surface_object()(Segment_3(s - noise, s + noise)));
+        if(is_centroid) centroid_on_surface = on_surface;
+        is_centroid = false;
+        if(on_surface) return true;
+      }
       d = (std::max)(d, distance_along(s, reach, patch));
       return true;
     });
@@ -207,15 +224,20 @@ public:
   {
     return for_each_grid_point(t, m, known, [&](const Bare_point& s, const Vector_3& reach) {
       const double length = std::sqrt(CGAL::to_double(reach.squared_length()));
-      if(!(limit < length)) return true; // no point of the segment is further
-      if(limit > 1e-9 * length) {
-        const typename MeshDomain::Intersection i =
-            domain_->construct_intersection_object()(Segment_3(s - reach * (limit / length), s + reach * (limit / length)));
-        if(std::get<2>(i) == 2) return true; // the nearest intersection is within `limit`
-      }
-      return distance_along(s, reach, patch) <= limit;
+      // deviations under the rounding noise count as none: on a flat patch, the bounds are
+      // themselves rounding noise, and a moved facet's points are off its plane by as much
+      const double tolerance = (std::max)(limit, noise_share * length);
+      if(!(tolerance < length)) return true; // no point of the segment is further
+      // a predicate, not a construction: whether the segment within `tolerance` meets the surface
+      const Vector_3 r = reach * (tolerance / length);
+      if(domain_->do_intersect_surface_object()(Segment_3(s - r, s + r)))
+        return true; // the nearest intersection is within `tolerance`
+      return distance_along(s, reach, patch) <= tolerance;
     });
   }
+
+  /// the share of half a facet's longest edge under which a deviation counts as rounding noise
+  static constexpr double noise_share = 1e-6;
 
 private:
   // calls `f(point, reach)` on the points of `deviation()`'s grid, with the half normal segment
@@ -256,8 +278,10 @@ private:
     double d = 0;
     bool on_patch = false;
     for(int k = 0; k < max_shrinks; ++k) {
-      const typename MeshDomain::Intersection i =
-          domain_->construct_intersection_object()(Segment_3(s - reach, s + reach));
+      const Segment_3 segment(s - reach, s + reach);
+      // after the first hit, most shrunk segments meet nothing: the predicate says so for less
+      if(k > 0 && !domain_->do_intersect_surface_object()(segment)) break;
+      const typename MeshDomain::Intersection i = domain_->construct_intersection_object()(segment);
       if(std::get<2>(i) != 2) break;
       d = std::sqrt(CGAL::to_double(CGAL::squared_distance(s, std::get<0>(i))));
       on_patch = domain_->surface_patch_index(std::get<1>(i)) == patch;
@@ -306,6 +330,9 @@ private:
   double nearest_in_cone(const Bare_point& s, const Vector_3& reach, double limit) const
   {
     const double length = std::sqrt(CGAL::to_double(reach.squared_length()));
+    // a distance of the rounding noise (a flat face not along the axes): no shorter one to look
+    // for, and segments that short would be points
+    if(!(limit > noise_share * length)) return limit;
     const Vector_3 n = reach / length;
     Vector_3 e1 = CGAL::cross_product(n, std::abs(CGAL::to_double(n.x())) < 0.6 ? Vector_3(1, 0, 0) : Vector_3(0, 1, 0));
     e1 = e1 / std::sqrt(CGAL::to_double(e1.squared_length()));
@@ -317,7 +344,9 @@ private:
         const Vector_3 u = n * std::cos(alpha) + (e1 * std::cos(beta) + e2 * std::sin(beta)) * std::sin(alpha);
         Vector_3 r = u * nearest;
         for(int k = 0; k < max_shrinks; ++k) {
-          const typename MeshDomain::Intersection i = domain_->construct_intersection_object()(Segment_3(s - r, s + r));
+          const Segment_3 segment(s - r, s + r);
+          if(k > 0 && !domain_->do_intersect_surface_object()(segment)) break;
+          const typename MeshDomain::Intersection i = domain_->construct_intersection_object()(segment);
           if(std::get<2>(i) != 2) break;
           const double d = std::sqrt(CGAL::to_double(CGAL::squared_distance(s, std::get<0>(i))));
           nearest = (std::min)(nearest, d);

@@ -119,10 +119,10 @@ public:
     Mesh_optimization_return_code result = MAX_ITERATION_NUMBER_REACHED;
     // the rounds stop once the worst cells gain less than 0.05 degree and the cells under the
     // bound drop by less than a 20th, two rounds in a row: later rounds barely move them, and
-    // the polishing lifts the last ones for a fraction of a round's time (fandisk at 100k
-    // vertices: rounds 5 to 11 of 3.5 s took the cells under 30 degrees from 165 to 152, and
-    // the polishing passes of 0.3 s all of them to none)
-    Worst_cells_progress progress(energy_, bound(), round_angle_gain, round_count_share);
+    // the polishing lifts the last ones for a fraction of a round's time. With a polishing, a
+    // round that raises the worst cells but leaves more cells under the bound than the best
+    // earlier round did is no progress either: the polishing lifts the worst ones anyway
+    Worst_cells_progress progress(energy_, bound(), round_angle_gain, round_count_share, options_.sliver_bound > 0);
     int round = 1;
     for(; round <= options_.max_rounds; ++round) {
       Round_report report;
@@ -186,27 +186,37 @@ private:
   // Whether the worst cells have stopped improving: `stalled()` is true after
   // `max_stalled_passes` calls in a row that neither raise the smallest angle by
   // `angle_gain` degrees nor lower the number of cells under the bound by `count_share`
-  // of the best count so far.
+  // of the best count so far. With `count_must_not_rise`, a call that leaves more cells
+  // under the bound than the best of the earlier calls does not count as progress, whatever
+  // the angle (the first call is measured against the start only: a first round can put more
+  // cells under the bound while it lifts the flattest).
   class Worst_cells_progress
   {
   public:
-    Worst_cells_progress(const Mesh_energy<C3T3>& energy, double bound, double angle_gain, double count_share)
-      : angle_gain_(angle_gain), count_share_(count_share), best_(energy.worst_and_count_under(bound))
+    Worst_cells_progress(const Mesh_energy<C3T3>& energy, double bound, double angle_gain, double count_share,
+                         bool count_must_not_rise = false)
+      : angle_gain_(angle_gain), count_share_(count_share), count_must_not_rise_(count_must_not_rise),
+        best_(energy.worst_and_count_under(bound))
     {}
 
     /// `now`: the mesh's `worst_and_count_under(bound)`
     bool stalled(const std::pair<double, std::size_t>& now)
     {
-      const bool better = now.first > best_.first + angle_gain_ ||
+      const bool rose = count_must_not_rise_ && calls_ > 0 && now.second > best_called_count_;
+      const bool better = (now.first > best_.first + angle_gain_ && !rose) ||
                           double(best_.second - (std::min)(best_.second, now.second)) > count_share_ * double(best_.second);
       best_ = {(std::max)(best_.first, now.first), (std::min)(best_.second, now.second)};
+      best_called_count_ = calls_++ > 0 ? (std::min)(best_called_count_, now.second) : now.second;
       stalled_ = better ? 0 : stalled_ + 1;
       return stalled_ >= max_stalled_passes;
     }
 
   private:
     double angle_gain_, count_share_;
+    bool count_must_not_rise_;
     std::pair<double, std::size_t> best_;
+    std::size_t best_called_count_ = 0; // the least count under the bound over the calls
+    int calls_ = 0;
     int stalled_ = 0;
   };
 
