@@ -50,11 +50,13 @@ double read_closed_surface(const std::string& path, Surface_mesh& sm, bool refus
   }
 }
 
-// --sizing thickness: the sizing field of the surface's walls and gaps
-Target_field input_sizing(const Options& options, const Surface_mesh& surface)
+// --sizing thickness: the sizing field of the surface's walls and gaps, and of the faces between
+// its protected feature curves
+Target_field input_sizing(const Options& options, const Surface_mesh& surface, double features_angle)
 {
   if(options.sizing != "thickness") return Target_field("");
-  const Thickness_sizing<K> sizing = thickness_sizing<K>(surface, options.cells_across, options.gradation);
+  const Thickness_sizing<K> sizing =
+      thickness_sizing<K>(surface, options.cells_across, options.gradation, features_angle);
   const auto field = sizing.field;
   return Target_field::input_sizing(
       "thickness", [field](const Eigen::Vector3d& x) { return (*field)(K::Point_3(x.x(), x.y(), x.z())); },
@@ -72,7 +74,7 @@ int run_polyhedral_domain(const Options& options)
   const double angle = options.features_angle >= 0 ? options.features_angle : (is_cube ? 60. : 0.);
   if(angle > 0) domain.detect_features(angle);
   Comparison_driver<C3T3, Domain> driver(options, is_cube ? "cube" : GSM::IO::file_stem(options.input), domain,
-                                         volume, input_sizing(options, surface));
+                                         volume, input_sizing(options, surface, angle));
   // two-sided, sampled on a grid of about 200,000 points on each surface (deterministic)
   const double spacing = std::sqrt(PMP::area(surface) / 2e5);
   driver.set_boundary_distance([&surface, spacing](const C3T3& c3t3) {

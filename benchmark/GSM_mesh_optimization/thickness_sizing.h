@@ -9,11 +9,13 @@
 #define VVM_BENCHMARK_THICKNESS_SIZING_H
 
 #include <CGAL/Local_thickness_3.h>
+#include <CGAL/Polygon_mesh_processing/detect_features.h>
 #include <CGAL/Real_timer.h>
 #include <CGAL/Thickness_sizing_field_3.h>
 
 #include <iostream>
 #include <memory>
+#include <unordered_map>
 
 namespace vvm_benchmark {
 
@@ -24,20 +26,30 @@ struct Thickness_sizing
   double median_size = 0; // over the surface samples
 };
 
-/// the thickness sizing of `surface`, `cells_across` cells across, graded by `gradation`; one
-/// line on std::cerr (samples, median size, grid, time)
+/// the thickness sizing of `surface`, `cells_across` cells across, graded by `gradation`, with
+/// the faces between the edges sharper than `features_angle` (if positive: the domain's
+/// protected features) as narrow as they are; one line on std::cerr (samples, median size,
+/// grid, time)
 template <class K, class TriangleMesh>
-Thickness_sizing<K> thickness_sizing(const TriangleMesh& surface, double cells_across, double gradation)
+Thickness_sizing<K> thickness_sizing(const TriangleMesh& surface, double cells_across, double gradation,
+                                     double features_angle = 0)
 {
   CGAL::Real_timer timer;
   timer.start();
-  const CGAL::Local_thickness_3<K> thickness(surface);
+  typedef typename boost::graph_traits<TriangleMesh>::edge_descriptor edge_descriptor;
+  std::unordered_map<edge_descriptor, bool> is_feature;
+  if(features_angle > 0)
+    CGAL::Polygon_mesh_processing::detect_sharp_edges(surface, features_angle,
+                                                      boost::make_assoc_property_map(is_feature));
+  const CGAL::Local_thickness_3<K> thickness(
+      surface, CGAL::parameters::edge_is_constrained_map(boost::make_assoc_property_map(is_feature)));
   Thickness_sizing<K> r;
   r.field = std::make_shared<const CGAL::Thickness_sizing_field_3<K>>(
       thickness, CGAL::VVM::parameters::cells_across(cells_across, CGAL::VVM::parameters::gradation(gradation)));
   timer.stop();
   r.median_size = r.field->typical_size();
-  std::cerr << "thickness sizing: " << thickness.samples().size() << " samples, median size " << r.median_size
+  std::cerr << "thickness sizing: " << thickness.samples().size() << " samples, "
+            << thickness.feature_samples().size() << " on feature curves, median size " << r.median_size
             << ", grid spacing " << r.field->grid_spacing() << " (" << timer.time() << " s)\n";
   return r;
 }

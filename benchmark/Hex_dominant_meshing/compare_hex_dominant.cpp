@@ -316,7 +316,7 @@ int run(const Options& o)
   timer.start();
   Field field = make_field(o, domain, volume);
   if(o.sizing == "thickness") { // T(x) h(x) / (h's median on the surface): the lattice's spacing follows the size
-    const auto sizing = vvm_benchmark::thickness_sizing<K>(surface, 3., 0.3);
+    const auto sizing = vvm_benchmark::thickness_sizing<K>(surface, 3., 0.3, o.features_angle);
     const auto size = sizing.field;
     field = Field([scaled = FF::Scaled_frame_field_3<Field, std::function<double(const Point_3&)>>(
                        field, [size](const Point_3& p) { return (*size)(p); }, sizing.median_size)](

@@ -66,7 +66,7 @@ int run_polyhedral_domain(const Options& options)
   };
   std::function<double(const K::Point_3&)> size;
   if(options.sizing == "thickness") {
-    const auto sizing = vvm_benchmark::thickness_sizing<K>(surface, 3., 0.3);
+    const auto sizing = vvm_benchmark::thickness_sizing<K>(surface, 3., 0.3, angle);
     const auto field = sizing.field;
     const double median = sizing.median_size;
     size = [field, median](const K::Point_3& p) { return (*field)(p) / median; };

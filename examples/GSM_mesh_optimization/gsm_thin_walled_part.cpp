@@ -1,6 +1,7 @@
 // Meshes a thin-walled part with a size that follows its walls: the local
 // thickness of the surface (CGAL::Local_thickness_3) gives a sizing field with
-// three cells across every wall and gap (CGAL::Thickness_sizing_field_3), which
+// three cells across every wall, gap and face between two protected feature
+// curves (CGAL::Thickness_sizing_field_3), which
 // make_mesh_3 takes as its edge, facet and cell sizes and gsm_optimize_mesh_3 as
 // its target size.
 //
@@ -11,6 +12,7 @@
 #include <CGAL/Mesh_complex_3_in_triangulation_3.h>
 #include <CGAL/Mesh_criteria_3.h>
 #include <CGAL/Mesh_triangulation_3.h>
+#include <CGAL/Polygon_mesh_processing/detect_features.h>
 #include <CGAL/Polyhedral_mesh_domain_with_features_3.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/make_mesh_3.h>
@@ -50,17 +52,22 @@ int main(int argc, char** argv)
     return 1;
   }
   try {
-    // the walls' and gaps' widths, then the size: 3 cells across, growing by at most 0.3 times
-    // the distance away from the thinnest parts
-    const CGAL::Local_thickness_3<K> thickness(surface);
+    // the walls' and gaps' widths, and those of the faces between the sharp edges that the
+    // domain will protect; then the size: 3 cells across, growing by at most 0.3 times the
+    // distance away from the thinnest parts
+    const double features_angle = 60;
+    auto is_feature = surface.add_property_map<Surface_mesh::Edge_index, bool>("e:sharp", false).first;
+    CGAL::Polygon_mesh_processing::detect_sharp_edges(surface, features_angle, is_feature);
+    const CGAL::Local_thickness_3<K> thickness(surface, params::edge_is_constrained_map(is_feature));
     const CGAL::Thickness_sizing_field_3<K> size =
         CGAL::Thickness_sizing_field_3<K>(thickness, VVM::parameters::cells_across(3, VVM::parameters::gradation(0.3)))
             .scaled(scale);
-    std::printf("sizes from %.4g to %.4g over %zu surface samples\n", size.minimum_size(), size.maximum_size(),
-                thickness.samples().size());
+    std::printf("sizes from %.4g to %.4g over %zu surface samples and %zu samples of feature curves\n",
+                size.minimum_size(), size.maximum_size(), thickness.samples().size(),
+                thickness.feature_samples().size());
 
     Mesh_domain domain(surface);
-    domain.detect_features(60);
+    domain.detect_features(features_angle);
     // a facet may stray from the surface by a tenth of its size
     auto distance = [&size](const K::Point_3& p, int, const Mesh_domain::Index&) { return 0.1 * size(p); };
     Mesh_criteria criteria(params::edge_size = size, params::facet_angle = 25, params::facet_size = size,

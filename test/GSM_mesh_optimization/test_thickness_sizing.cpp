@@ -2,13 +2,15 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // Local_thickness_3 and Thickness_sizing_field_3: the thickness and gap of a slab,
-// a tube and a spherical shell against their exact values, the sizing field's
-// sizes and gradation bound, and bad inputs refused.
+// a tube and a spherical shell against their exact values, the widths of the faces
+// between feature curves (a slab's sides, a step), the sizing field's sizes and
+// gradation bound, and bad inputs refused.
 
 #include "vvm_test.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Local_thickness_3.h>
+#include <CGAL/Polygon_mesh_processing/detect_features.h>
 #include <CGAL/Polygon_mesh_processing/orientation.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 #include <CGAL/Surface_mesh.h>
@@ -92,6 +94,30 @@ Surface_mesh spherical_shell()
   CGAL::Polygon_mesh_processing::reverse_face_orientations(inner);
   shell += inner;
   return shell;
+}
+
+// the polygon (y, z), counterclockwise, extruded along x from 0 to 1
+Surface_mesh prism(const std::vector<std::pair<double, double>>& profile)
+{
+  Surface_mesh sm;
+  const std::size_t m = profile.size();
+  std::vector<Surface_mesh::Vertex_index> v;
+  for(double x : {0., 1.})
+    for(const auto& yz : profile) v.push_back(sm.add_vertex(Point_3(x, yz.first, yz.second)));
+  std::vector<Surface_mesh::Vertex_index> near_cap(v.rbegin() + std::ptrdiff_t(m), v.rend()), far_cap(v.begin() + std::ptrdiff_t(m), v.end());
+  sm.add_face(near_cap);
+  sm.add_face(far_cap);
+  for(std::size_t i = 0; i < m; ++i) sm.add_face(v[i], v[(i + 1) % m], v[m + (i + 1) % m], v[m + i]);
+  CGAL::Polygon_mesh_processing::triangulate_faces(sm);
+  return sm;
+}
+
+// the widths of the faces between `surface`'s edges sharper than 60 degrees
+Local_thickness with_sharp_edges(Surface_mesh& surface)
+{
+  auto sharp = surface.add_property_map<Surface_mesh::Edge_index, bool>("e:sharp", false).first;
+  CGAL::Polygon_mesh_processing::detect_sharp_edges(surface, 60., sharp);
+  return Local_thickness(surface, CGAL::parameters::edge_is_constrained_map(sharp));
 }
 
 double median(std::vector<double> v)
@@ -183,6 +209,60 @@ void test_spherical_shell()
 
 // |h(x) - h(y)| <= g |x - y| for points three grid cells apart or more; the size is h_s at the
 // walls, and the caps and the scale hold
+// the feature curves of a slab are its 12 edges: a side face between two rims is as wide as the
+// slab is thick; the large faces' opposite rims and the curves that meet at a corner are near
+// each other along the curves
+void test_narrow_faces_of_a_slab()
+{
+  Surface_mesh slab = box(4, 3, 0.2);
+  VVM_CHECK(Local_thickness(slab).feature_samples().empty()); // no feature edges given
+  const Local_thickness thickness = with_sharp_edges(slab);
+  std::size_t away_from_corners = 0, exact = 0;
+  double narrowest = std::numeric_limits<double>::infinity();
+  for(const auto& f : thickness.feature_samples()) {
+    narrowest = (std::min)(narrowest, f.width);
+    const double x = f.point.x(), y = f.point.y();
+    const bool on_rim = std::abs(f.point.z()) < 1e-12 || std::abs(f.point.z() - 0.2) < 1e-12;
+    // 0.3 from the corners, the path around the corner is more than four times 0.2
+    const bool far = (std::min)({x, 4 - x}) > 0.31 || (std::min)({y, 3 - y}) > 0.31;
+    if(!on_rim || !far || (x > 1e-12 && x < 4 - 1e-12 && y > 1e-12 && y < 3 - 1e-12)) continue;
+    ++away_from_corners;
+    // facing the other rim of the same side face, straight across it
+    if(std::abs(f.width - 0.2) < 1e-9 && std::abs(f.facing.x() - x) < 1e-9 && std::abs(f.facing.y() - y) < 1e-9)
+      ++exact;
+  }
+  std::cout << "    slab: " << thickness.feature_samples().size() << " feature samples, " << away_from_corners
+            << " on the rims away from the corners, " << exact << " of them 0.2 wide; narrowest " << narrowest << "\n";
+  VVM_CHECK(away_from_corners > 100);
+  VVM_CHECK_EQUAL(exact, away_from_corners);
+  VVM_CHECK(narrowest > 0.2 - 1e-9);
+  VVM_CHECK(std::all_of(thickness.feature_samples().begin(), thickness.feature_samples().end(), [&](const auto& f) {
+    return f.length > 0 && f.length <= thickness.sample_spacing() / 2 + 1e-12;
+  }));
+}
+
+// a step 0.05 wide on a unit block: no wall is thin, but the face between the step's two edges
+// holds only as large a mesh as it is wide
+void test_narrow_face_of_a_step()
+{
+  Surface_mesh step = prism({{0, 0}, {1, 0}, {1, 1}, {0.95, 1}, {0.95, 1.2}, {0, 1.2}});
+  VVM_CHECK(CGAL::is_closed(step) && CGAL::is_triangle_mesh(step));
+  const Local_thickness plain(step), featured = with_sharp_edges(step);
+  std::vector<double> step_widths;
+  for(const auto& f : featured.feature_samples())
+    if(std::abs(f.point.z() - 1) < 1e-12 && f.point.x() > 0.2 && f.point.x() < 0.8) step_widths.push_back(f.width);
+  VVM_CHECK(step_widths.size() > 10);
+  VVM_CHECK_EQUAL(share_within(step_widths, 0.05, 1e-9), 1.);
+  const Sizing_field without(plain), with(featured);
+  const Point_3 on_step(0.5, 0.975, 1.), below(0.5, 0.975, 0.5);
+  std::cout << "    step: size on the step " << with(on_step) << " with its feature curves, " << without(on_step)
+            << " without; 0.5 below it " << with(below) << "\n";
+  VVM_CHECK_CLOSE(with(on_step), 0.05 / 3, 0.3 * with.grid_spacing());
+  VVM_CHECK(without(on_step) > 0.1);
+  // graded away from the step
+  VVM_CHECK(with(below) > 0.05 / 3 + 0.3 * (0.5 - 0.1) && with(below) <= 0.05 / 3 + 1.1 * 0.3 * 0.5);
+}
+
 void test_sizing_field_bounds()
 {
   const Local_thickness thickness(tube());
@@ -259,6 +339,8 @@ int main(int argc, char** argv)
                        {{"slab", test_slab},
                         {"tube", test_tube},
                         {"spherical_shell", test_spherical_shell},
+                        {"narrow_faces_of_a_slab", test_narrow_faces_of_a_slab},
+                        {"narrow_face_of_a_step", test_narrow_face_of_a_step},
                         {"sizing_field_bounds", test_sizing_field_bounds},
                         {"bad_inputs", test_bad_inputs}});
 }

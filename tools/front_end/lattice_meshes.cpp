@@ -82,7 +82,7 @@ Volume_mesh lattice_tet_mesh(const Surface_source& input, const Tet_options& o, 
                                              [&stage](const TLM::Lattice_round_report& rr) {
                                                stage.report(particle_round_text(rr));
                                              }))));
-  const auto sizing = relative_sizing(o.sizing, in.surface);
+  const auto sizing = relative_sizing(o.sizing, in);
   // the cross field's mesh about as fine as a BCC lattice of the requested count
   const double cross_size = o.size.size > 0 ? o.size.size : std::cbrt(2 * in.volume / double(o.size.vertices));
   Surface_c3t3 c3t3 = with_field(o.field, sizing.get(), *in.domain, cross_size, o.time_limit, [&](const auto* field) {
@@ -138,7 +138,7 @@ Volume_mesh hex_dominant_mesh(const Surface_source& input, const Hex_dominant_op
                                  [&stage](const internal::TLM::Lattice_round_report& rr) {
                                    stage.report(internal::particle_round_text(rr));
                                  }))))));
-  const auto sizing = internal::relative_sizing(o.sizing, in.surface);
+  const auto sizing = internal::relative_sizing(o.sizing, in);
   const double cross_size = o.size.size > 0 ? o.size.size : std::cbrt(in.volume / double(o.size.vertices));
   Volume_mesh mesh = internal::with_field(o.field, sizing.get(), *in.domain, cross_size, o.time_limit, [&](const auto* field) {
     try {

@@ -23,6 +23,7 @@
 #include <CGAL/Mesh_complex_3_in_triangulation_3.h>
 #include <CGAL/Mesh_criteria_3.h>
 #include <CGAL/Mesh_triangulation_3.h>
+#include <CGAL/Polygon_mesh_processing/detect_features.h>
 #include <CGAL/Polyhedral_mesh_domain_with_features_3.h>
 #include <CGAL/Random.h>
 #include <CGAL/Real_timer.h>
@@ -36,6 +37,7 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <unordered_map>
 
 namespace vvm {
 namespace internal {
@@ -52,9 +54,10 @@ struct Surface_input
 {
   Surface_mesh surface;
   double volume = 0;
+  double features_angle = 0; // the domain's features are the edges sharper than this (0: none)
   std::unique_ptr<Surface_domain> domain;
 
-  Surface_input(const Surface_source& source, double features_angle)
+  Surface_input(const Surface_source& source, double features_angle) : features_angle(features_angle)
   {
     namespace IO = CGAL::GSM_mesh_optimization::IO;
     if(!(features_angle >= 0 && features_angle < 180))
@@ -150,14 +153,19 @@ inline void check_mesh_size(const Mesh_size& s, const char* count_name = "vertic
 
 typedef CGAL::Thickness_sizing_field_3<Kernel> Thickness_size;
 
-/// `sizing` of the options: nothing (uniform), or the thickness sizing of the surface, relative
-/// to its median over the surface
-inline std::shared_ptr<const Thickness_size> relative_sizing(const std::string& sizing, const Surface_mesh& surface)
+/// `sizing` of the options: nothing (uniform), or the thickness sizing of the surface (its walls,
+/// gaps, and the faces between its protected features), relative to its median over the surface
+inline std::shared_ptr<const Thickness_size> relative_sizing(const std::string& sizing, const Surface_input& in)
 {
   if(sizing == "uniform") return nullptr;
   if(sizing != "thickness") throw Input_error("unknown sizing '" + sizing + "' (known: uniform, thickness)");
   try {
-    const Thickness_size size{CGAL::Local_thickness_3<Kernel>(surface)};
+    std::unordered_map<Surface_mesh::Edge_index, bool> is_feature;
+    if(in.features_angle > 0)
+      CGAL::Polygon_mesh_processing::detect_sharp_edges(in.surface, in.features_angle,
+                                                        boost::make_assoc_property_map(is_feature));
+    const Thickness_size size{CGAL::Local_thickness_3<Kernel>(
+        in.surface, CGAL::parameters::edge_is_constrained_map(boost::make_assoc_property_map(is_feature)))};
     return std::make_shared<const Thickness_size>(size.scaled(1 / size.typical_size()));
   } catch(const std::invalid_argument& e) {
     throw Input_error(e.what());

@@ -63,7 +63,7 @@ Volume_mesh tet_mesh(const Surface_source& input, const Tet_options& o, const Pr
   {
     const internal::Stage stage(progress, "make_mesh_3");
     if(o.sizing != "uniform") stage.report("the surface's thickness");
-    sizing = internal::relative_sizing(o.sizing, in.surface);
+    sizing = internal::relative_sizing(o.sizing, in);
     c3t3 = internal::initial_mesh<internal::Surface_c3t3>(*in.domain, in.volume, o.size, o.seed, stage, sizing.get());
     r.mesh_time = stage.time();
   }

@@ -76,7 +76,8 @@ struct Tet_options
   Mesh_size size;
   double features_angle = 60;  ///< degrees; 0: no feature protected (surfaces only)
   std::string field = "cross"; ///< cross, identity, or a frame-field file (lattices; a file is GSM's metric too)
-  /// uniform, or thickness: the size follows the surface's walls and gaps, 3 cells across
+  /// uniform, or thickness: the size follows the surface's walls, gaps and the faces between its
+  /// protected feature curves, 3 cells across
   /// (CGAL::Thickness_sizing_field_3; surfaces only), its median over the surface being the
   /// size (or the one that gives the vertex count)
   std::string sizing = "uniform";

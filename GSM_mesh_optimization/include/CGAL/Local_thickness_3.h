@@ -5,7 +5,8 @@
 // local gap between two parts of it that face each other across empty space.
 // Both are measured by rays cast from points sampled on the surface, along the
 // inward (thickness) or outward (gap) normal, counting only the surface parts
-// that face back: a sharp edge's other side is not a wall.
+// that face back: a sharp edge's other side is not a wall. Where the surface has
+// feature curves, also the width of the faces between two of them.
 
 #ifndef CGAL_LOCAL_THICKNESS_3_H
 #define CGAL_LOCAL_THICKNESS_3_H
@@ -19,6 +20,7 @@
 #include <CGAL/Bbox_3.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Named_function_parameters.h>
+#include <CGAL/Orthogonal_incremental_neighbor_search.h>
 #include <CGAL/Orthogonal_k_neighbor_search.h>
 #include <CGAL/Search_traits_3.h>
 #include <CGAL/Search_traits_adapter.h>
@@ -32,8 +34,12 @@
 #include <limits>
 #include <memory>
 #include <numeric>
+#include <queue>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
+#include <unordered_map>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -56,6 +62,16 @@ namespace CGAL {
  *
  * At any point, `thickness()` and `gap()` are those of the nearest sample.
  *
+ * Feature curves (the edges of `edge_is_constrained_map`, e.g. the sharp edges found by
+ * `Polygon_mesh_processing::detect_sharp_edges()` with the angle the mesh domain's features
+ * are detected with) are sampled as well: the width at a feature sample is its distance to the
+ * nearest feature curve that is not near it along the curves: the path along the feature
+ * edges is more than four times as long as the straight line. Two curves that meet at a
+ * corner are near each other unless their angle there is under 29 degrees, so a corner does
+ * not count as a narrow face. A narrow face between two feature
+ * curves, e.g. a step or the end of a blade, holds a mesh no coarser than that width, since
+ * the curves' vertices are kept: this width is to such faces what the thickness is to walls.
+ *
  * \tparam GeomTraits a model of `Kernel` with `double` coordinates (default:
  *   `Exact_predicates_inexact_constructions_kernel`)
  */
@@ -76,6 +92,16 @@ public:
     double gap;       ///< across the outside; infinity if nothing faces back
   };
 
+  /// a point of a feature curve and the nearest point of another feature curve
+  struct Feature_sample
+  {
+    Point_3 point;  ///< on a feature edge
+    Point_3 facing; ///< the nearest point of a feature curve far from `point` along the curves
+    double width;   ///< the distance from `point` to `facing`; infinity if none is within a
+                    ///< quarter of the bounding box's diagonal
+    double length;  ///< the length of the feature edge's piece the sample stands for
+  };
+
   /*!
    * samples `tm` and casts the rays.
    *
@@ -94,6 +120,17 @@ public:
    *     \cgalParamDescription{the distance between two samples (`CGAL::VVM::parameters`)}
    *     \cgalParamType{`double`}
    *     \cgalParamDefault{the spacing that gives about 20,000 samples}
+   *   \cgalParamNEnd
+   *   \cgalParamNBegin{edge_is_constrained_map}
+   *     \cgalParamDescription{the feature edges of `tm`, whose faces' widths are measured}
+   *     \cgalParamType{a class model of `ReadablePropertyMap` with
+   *       `boost::graph_traits<TriangleMesh>::%edge_descriptor` as key type and `bool` as value type}
+   *     \cgalParamDefault{no edge is a feature edge}
+   *   \cgalParamNEnd
+   *   \cgalParamNBegin{vertex_index_map}
+   *     \cgalParamDescription{a property map associating to each vertex of `tm` a unique index
+   *       between `0` and `num_vertices(tm) - 1`, used with `edge_is_constrained_map`}
+   *     \cgalParamDefault{an automatically indexed internal map}
    *   \cgalParamNEnd
    *   \cgalParamNBegin{cone_angle}
    *     \cgalParamDescription{the opening angle of the cone of rays, in degrees, in (0, 120]
@@ -130,10 +167,17 @@ public:
     sample_faces();
     cast_rays(cone_degrees * CGAL_PI / 180.);
     build_search_tree();
+    if constexpr(!CGAL::parameters::is_default_parameter<NamedParameters, CGAL::internal_np::edge_is_constrained_t>::value) {
+      read_feature_edges(tm, vpm, get_parameter(np, CGAL::internal_np::edge_is_constrained),
+                         CGAL::get_initialized_vertex_index_map(tm, np));
+      measure_feature_widths();
+    }
   }
 
   /// the samples, with their thickness and gap
   const std::vector<Sample>& samples() const { return samples_; }
+  /// the samples of the feature curves, with their widths (none without `edge_is_constrained_map`)
+  const std::vector<Feature_sample>& feature_samples() const { return feature_samples_; }
   /// the distance between two samples
   double sample_spacing() const { return spacing_; }
   /// the bounding box of the surface
@@ -160,6 +204,8 @@ private:
   typedef CGAL::Orthogonal_k_neighbor_search<Search_traits> Neighbor_search;
   typedef typename Neighbor_search::Tree Search_tree;
   typedef typename Neighbor_search::Distance Distance;
+  typedef CGAL::Orthogonal_incremental_neighbor_search<Search_traits> Incremental_search;
+  static_assert(std::is_same<typename Incremental_search::Tree, Search_tree>::value, "one kd-tree type for both searches");
 
   template <class TriangleMesh, class VertexPointMap>
   void read_triangles(const TriangleMesh& tm, const VertexPointMap& vpm)
@@ -270,6 +316,134 @@ private:
     return std::cos(tilt) * axis + std::sin(tilt) * (std::cos(phi) * u + std::sin(phi) * v);
   }
 
+  template <class TriangleMesh, class VertexPointMap, class EdgeIsFeatureMap, class VertexIndexMap>
+  void read_feature_edges(const TriangleMesh& tm, const VertexPointMap& vpm, const EdgeIsFeatureMap& is_feature,
+                          const VertexIndexMap& vertex_index)
+  {
+    const std::size_t none = std::numeric_limits<std::size_t>::max();
+    std::vector<std::size_t> node_of(num_vertices(tm), none);
+    auto node = [&](typename boost::graph_traits<TriangleMesh>::vertex_descriptor v) {
+      std::size_t& n = node_of[std::size_t(get(vertex_index, v))];
+      if(n == none) {
+        const auto& q = get(vpm, v);
+        n = feature_nodes_.size();
+        feature_nodes_.emplace_back(CGAL::to_double(q.x()), CGAL::to_double(q.y()), CGAL::to_double(q.z()));
+        feature_adjacency_.emplace_back();
+      }
+      return n;
+    };
+    for(auto e : edges(tm)) {
+      if(!get(is_feature, e)) continue;
+      const std::size_t a = node(source(e, tm)), b = node(target(e, tm));
+      if(a == b) continue;
+      const double length = std::sqrt(CGAL::squared_distance(feature_nodes_[a], feature_nodes_[b]));
+      feature_adjacency_[a].push_back({b, length});
+      feature_adjacency_[b].push_back({a, length});
+      feature_edges_.push_back({a, b});
+    }
+  }
+
+  // a point of another feature curve is far from a sample along the curves when the path
+  // between them along the feature edges is more than this times the straight distance
+  static constexpr double detour_ratio = 4;
+
+  // the feature edges cut into pieces at most half a sample spacing long, one sample in the
+  // middle of each; for each sample, the nearest piece (by increasing distance) whose sample is
+  // far from it along the curves (a lazy Dijkstra from the sample, run as far as the straight
+  // distance asks)
+  void measure_feature_widths()
+  {
+    struct Piece { std::size_t edge; double t, half; }; // edge parameter of the middle, half extent
+    std::vector<Piece> pieces;
+    for(std::size_t e = 0; e < feature_edges_.size(); ++e) {
+      const Point_3 &a = feature_nodes_[feature_edges_[e].first], &b = feature_nodes_[feature_edges_[e].second];
+      const double length = std::sqrt(CGAL::squared_distance(a, b));
+      const std::size_t n = (std::max)(std::size_t(1), std::size_t(std::ceil(2 * length / spacing_)));
+      for(std::size_t k = 0; k < n; ++k) {
+        const double t = (double(k) + 0.5) / double(n);
+        pieces.push_back({e, t, 0.5 / double(n)});
+        feature_samples_.push_back(Feature_sample{a + t * (b - a), a + t * (b - a),
+                                                  std::numeric_limits<double>::infinity(), length / double(n)});
+      }
+    }
+    if(pieces.empty()) return;
+    std::vector<Point_3> points;
+    for(const Feature_sample& s : feature_samples_) points.push_back(s.point);
+    std::vector<std::size_t> indices(points.size());
+    std::iota(indices.begin(), indices.end(), std::size_t(0));
+    const Sample_point_map point_map(points.data());
+    Search_tree tree(indices.begin(), indices.end(), typename Search_tree::Splitter(), Search_traits(point_map));
+    tree.build();
+    const double diagonal = std::sqrt(CGAL::square(bbox_.x_span()) + CGAL::square(bbox_.y_span()) +
+                                      CGAL::square(bbox_.z_span()));
+    const double reach = diagonal / 4;
+    auto edge_length = [&](std::size_t e) {
+      return std::sqrt(CGAL::squared_distance(feature_nodes_[feature_edges_[e].first], feature_nodes_[feature_edges_[e].second]));
+    };
+    GSM_mesh_optimization::internal::parallel_for_ranges(
+        pieces.size(), 16, [&](const GSM_mesh_optimization::internal::Index_range& range) {
+          typedef std::pair<double, std::size_t> Entry;
+          for(std::size_t i = range.begin(); i != range.end(); ++i) {
+            const Piece& mine = pieces[i];
+            const Point_3& p = points[i];
+            // the distance along the feature edges from p to their nodes, final up to `settled`
+            std::unordered_map<std::size_t, double> along;
+            std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> front;
+            double settled = 0;
+            const double my_length = edge_length(mine.edge);
+            const auto& my_edge = feature_edges_[mine.edge];
+            front.push({mine.t * my_length, my_edge.first});
+            front.push({(1 - mine.t) * my_length, my_edge.second});
+            auto settle_up_to = [&](double radius) {
+              while(!front.empty() && front.top().first <= radius) {
+                const Entry top = front.top();
+                front.pop();
+                auto found = along.find(top.second);
+                if(found != along.end() && found->second <= top.first) continue;
+                along[top.second] = top.first;
+                for(const auto& next : feature_adjacency_[top.second]) {
+                  auto known = along.find(next.first);
+                  if(known == along.end() || known->second > top.first + next.second)
+                    front.push({top.first + next.second, next.first});
+                }
+              }
+              settled = (std::max)(settled, radius);
+            };
+            auto distance_along = [&](const Piece& q) {
+              const double length = edge_length(q.edge);
+              if(q.edge == mine.edge) return std::abs(q.t - mine.t) * length;
+              double d = std::numeric_limits<double>::infinity();
+              const auto& edge = feature_edges_[q.edge];
+              auto a = along.find(edge.first), b = along.find(edge.second);
+              if(a != along.end() && a->second <= settled) d = (std::min)(d, a->second + q.t * length);
+              if(b != along.end() && b->second <= settled) d = (std::min)(d, b->second + (1 - q.t) * length);
+              return d;
+            };
+            Feature_sample& result = feature_samples_[i];
+            Incremental_search search(tree, p, 0, true, Distance(point_map));
+            for(auto it = search.begin(); it != search.end(); ++it) {
+              const double straight = std::sqrt(it->second);
+              if(straight > reach || straight - spacing_ / 2 > result.width) break;
+              const Piece& q = pieces[it->first];
+              settle_up_to(detour_ratio * straight);
+              if(distance_along(q) <= detour_ratio * straight) continue;
+              // the point of q's piece nearest to p
+              const Point_3 &a = feature_nodes_[feature_edges_[q.edge].first],
+                            &b = feature_nodes_[feature_edges_[q.edge].second];
+              const Vector_3 ab = b - a;
+              const double t = std::clamp(((p - a) * ab) / (std::max)(ab.squared_length(), 1e-300),
+                                          q.t - q.half, q.t + q.half);
+              const Point_3 nearest = a + t * ab;
+              const double width = std::sqrt(CGAL::squared_distance(p, nearest));
+              if(width < result.width) {
+                result.width = width;
+                result.facing = nearest;
+              }
+            }
+          }
+        });
+  }
+
   static Vector_3 unit_orthogonal(const Vector_3& n)
   {
     const Vector_3 e = std::abs(n.x()) < 0.6 ? Vector_3(1, 0, 0) : Vector_3(0, 1, 0);
@@ -301,6 +475,11 @@ private:
   // shared by copies: the search tree refers to the points
   std::shared_ptr<std::vector<Point_3>> points_;
   std::shared_ptr<Search_tree> search_tree_;
+  // the feature curves: their vertices, edges (pairs of vertices) and adjacency (vertex, length)
+  std::vector<Point_3> feature_nodes_;
+  std::vector<std::pair<std::size_t, std::size_t>> feature_edges_;
+  std::vector<std::vector<std::pair<std::size_t, double>>> feature_adjacency_;
+  std::vector<Feature_sample> feature_samples_;
 };
 
 } // namespace CGAL

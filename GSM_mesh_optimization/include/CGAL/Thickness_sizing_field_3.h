@@ -32,7 +32,9 @@ namespace CGAL {
  * segment \f$ \sigma_s \f$ across the wall (the sample alone if the gap is the smaller),
  * thickened by the samples' spacing \f$ r \f$ (a sample stands for the surface around it);
  * everywhere the size is \f$ h(x) = \min(h_{max}, \min_s (h_s + g \max(0, d(x, \sigma_s) - r))) \f$,
- * so that it grows by at most the gradation \f$ g \f$ times the distance. \f$ h \f$ is computed on a regular grid (the cones
+ * so that it grows by at most the gradation \f$ g \f$ times the distance. The samples of the
+ * feature curves (`Local_thickness_3::feature_samples()`) are cones too: \f$ w_s \f$ is the
+ * width of the face between two feature curves, on the segment joining them. \f$ h \f$ is computed on a regular grid (the cones
  * propagated from node to node, as a chamfer distance) and interpolated trilinearly in between;
  * the bound on its growth holds between points a few grid cells apart.
  *
@@ -112,12 +114,16 @@ public:
     if(!(gradation_ > 0) || !std::isfinite(gradation_))
       throw std::invalid_argument("Thickness_sizing_field_3: gradation must be positive and finite");
 
-    std::vector<double> sample_sizes;
+    std::vector<double> sample_sizes, feature_sizes;
     double smallest = max_size_;
     for(const auto& s : thickness.samples()) {
       const double width = (std::min)(s.thickness, s.gap);
       sample_sizes.push_back(std::clamp(width / cells_across_, min_size_, max_size_));
       smallest = (std::min)(smallest, sample_sizes.back());
+    }
+    for(const auto& s : thickness.feature_samples()) {
+      feature_sizes.push_back(std::clamp(s.width / cells_across_, min_size_, max_size_));
+      smallest = (std::min)(smallest, feature_sizes.back());
     }
     const double box_volume = (box.x_span() + 1e-9 * diagonal) * (box.y_span() + 1e-9 * diagonal) *
                               (box.z_span() + 1e-9 * diagonal);
@@ -139,6 +145,7 @@ public:
     grid->spacing = spacing_;
     grid->values.assign(std::size_t(nodes), float(max_size_));
     seed_cones(*grid, thickness, sample_sizes);
+    seed_feature_cones(*grid, thickness, feature_sizes);
     propagate_cones(*grid);
     grid_ = grid;
     std::vector<double> on_surface;
@@ -236,6 +243,26 @@ private:
         const double p[3] = {sample.point.x() - depth * sample.normal.x(), sample.point.y() - depth * sample.normal.y(),
                              sample.point.z() - depth * sample.normal.z()};
         seed_cone(grid, p, radius, sample_sizes[s]);
+      }
+    }
+  }
+
+  // each feature sample's cone, on the segment across the face to the facing curve; the apex
+  // thickened by half the piece of feature edge the sample stands for
+  void seed_feature_cones(Grid& grid, const Local_thickness_3<Geom_traits>& thickness,
+                          const std::vector<double>& sizes) const
+  {
+    const auto& samples = thickness.feature_samples();
+    for(std::size_t s = 0; s < samples.size(); ++s) {
+      if(!(sizes[s] < max_size_)) continue;
+      const auto& sample = samples[s];
+      const int steps = int(std::ceil((std::min)(32., sample.width / (std::max)(grid.spacing, sample.length))));
+      for(int step = 0; step <= steps; ++step) {
+        const double t = steps == 0 ? 0. : double(step) / steps;
+        const double p[3] = {sample.point.x() + t * (sample.facing.x() - sample.point.x()),
+                             sample.point.y() + t * (sample.facing.y() - sample.point.y()),
+                             sample.point.z() + t * (sample.facing.z() - sample.point.z())};
+        seed_cone(grid, p, sample.length / 2, sizes[s]);
       }
     }
   }

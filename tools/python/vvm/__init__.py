@@ -269,8 +269,8 @@ def tet_mesh(surface, method="gsm", vertices=None, size=None, features_angle=Non
     60) are kept as feature curves; 0 keeps none. ``field``: ``"cross"`` (the
     boundary-aligned cross field), ``"identity"``, a frame-field file or a
     :class:`FrameField`; for lattices, and GSM's target metric when a file or FrameField.
-    ``sizing``: ``"uniform"``, or ``"thickness"``: the size follows the surface's walls and gaps,
-    three cells across, growing away from them by at most 0.3 times the distance (surfaces
+    ``sizing``: ``"uniform"``, or ``"thickness"``: the size follows the surface's walls, gaps and
+    the faces between its protected feature curves (``features_angle``), three cells across, growing away from them by at most 0.3 times the distance (surfaces
     only); ``size`` is then its median over the surface, ``vertices`` still the count; for
     lattices it scales the field's frames.
     ``threads``: None or 0 for all cores. ``seed``: the same seed and threads give the same mesh.
