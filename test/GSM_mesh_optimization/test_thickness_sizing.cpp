@@ -207,15 +207,12 @@ void test_spherical_shell()
   VVM_CHECK_CLOSE(Local_thickness(reversed).thickness(Point_3(0, 0.95, 0)), thickness.thickness(Point_3(0, 0.95, 0)), 1e-12);
 }
 
-// |h(x) - h(y)| <= g |x - y| for points three grid cells apart or more; the size is h_s at the
-// walls, and the caps and the scale hold
 // the feature curves of a slab are its 12 edges: a side face between two rims is as wide as the
 // slab is thick; the large faces' opposite rims and the curves that meet at a corner are near
 // each other along the curves
 void test_narrow_faces_of_a_slab()
 {
   Surface_mesh slab = box(4, 3, 0.2);
-  VVM_CHECK(Local_thickness(slab).feature_samples().empty()); // no feature edges given
   const Local_thickness thickness = with_sharp_edges(slab);
   std::size_t away_from_corners = 0, exact = 0;
   double narrowest = std::numeric_limits<double>::infinity();
@@ -241,6 +238,36 @@ void test_narrow_faces_of_a_slab()
   }));
 }
 
+// a prism on the triangle of angles 20 (at y = 0), 45 (at y = 1) and 115 degrees. On a cap, the
+// edge from the 20-degree corner to the 45-degree one faces the 20-degree corner's other edge at
+// y sin 20 where the path along the curves either way is more than four times that (y < 0.35).
+// Near the 45-degree corner (y > 0.7), every other curve is near along the curves: no width
+// (with twice instead of four times, the 45-degree corner's other edge would be narrow)
+void test_narrow_faces_at_corners()
+{
+  const double side = std::sin(CGAL_PI / 4) / std::sin(115 * CGAL_PI / 180); // from the 20-degree corner
+  Surface_mesh wedge = prism({{0, 0}, {1, 0}, {side * std::cos(CGAL_PI / 9), side * std::sin(CGAL_PI / 9)}});
+  const Local_thickness thickness = with_sharp_edges(wedge);
+  std::size_t near_sharp = 0, exact = 0, near_right = 0, none = 0;
+  for(const auto& f : thickness.feature_samples()) {
+    const double y = f.point.y();
+    const bool on_cap = std::abs(f.point.x()) < 1e-12 || std::abs(f.point.x() - 1) < 1e-12;
+    if(!on_cap || std::abs(f.point.z()) > 1e-12) continue;
+    if(y > 0.1 && y < 0.3) {
+      ++near_sharp;
+      exact += std::abs(f.width - y * std::sin(CGAL_PI / 9)) < 1e-9 ? 1 : 0;
+    } else if(y > 0.7 && y < 0.95) {
+      ++near_right;
+      none += std::isinf(f.width) ? 1 : 0;
+    }
+  }
+  std::cout << "    corners: " << exact << " of " << near_sharp << " samples near the 20-degree corner y sin 20 wide, "
+            << none << " of " << near_right << " near the 45-degree corner with no width\n";
+  VVM_CHECK(near_sharp > 20 && near_right > 20);
+  VVM_CHECK_EQUAL(exact, near_sharp);
+  VVM_CHECK_EQUAL(none, near_right);
+}
+
 // a step 0.05 wide on a unit block: no wall is thin, but the face between the step's two edges
 // holds only as large a mesh as it is wide
 void test_narrow_face_of_a_step()
@@ -263,6 +290,8 @@ void test_narrow_face_of_a_step()
   VVM_CHECK(with(below) > 0.05 / 3 + 0.3 * (0.5 - 0.1) && with(below) <= 0.05 / 3 + 1.1 * 0.3 * 0.5);
 }
 
+// |h(x) - h(y)| <= g |x - y| for points three grid cells apart or more; the size is h_s at the
+// walls, and the caps and the scale hold
 void test_sizing_field_bounds()
 {
   const Local_thickness thickness(tube());
@@ -340,6 +369,7 @@ int main(int argc, char** argv)
                         {"tube", test_tube},
                         {"spherical_shell", test_spherical_shell},
                         {"narrow_faces_of_a_slab", test_narrow_faces_of_a_slab},
+                        {"narrow_faces_at_corners", test_narrow_faces_at_corners},
                         {"narrow_face_of_a_step", test_narrow_face_of_a_step},
                         {"sizing_field_bounds", test_sizing_field_bounds},
                         {"bad_inputs", test_bad_inputs}});

@@ -29,9 +29,11 @@
 #include <CGAL/property_map.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <map>
 #include <memory>
 #include <numeric>
 #include <queue>
@@ -64,13 +66,16 @@ namespace CGAL {
  *
  * Feature curves (the edges of `edge_is_constrained_map`, e.g. the sharp edges found by
  * `Polygon_mesh_processing::detect_sharp_edges()` with the angle the mesh domain's features
- * are detected with) are sampled as well: the width at a feature sample is its distance to the
- * nearest feature curve that is not near it along the curves: the path along the feature
- * edges is more than four times as long as the straight line. Two curves that meet at a
- * corner are near each other unless their angle there is under 29 degrees, so a corner does
- * not count as a narrow face. A narrow face between two feature
- * curves, e.g. a step or the end of a blade, holds a mesh no coarser than that width, since
- * the curves' vertices are kept: this width is to such faces what the thickness is to walls.
+ * are detected with) are sampled as well. The width at a feature sample is its straight
+ * distance to the nearest feature curve that is far from it along the curves (the path along
+ * the feature edges is more than four times as long), across a face, the inside or the outside.
+ * Two curves that meet at a corner are near each other unless their angle there is under 29
+ * degrees, so most corners do not count as narrow. A narrow face between two feature curves,
+ * e.g. a step or the end of a blade, holds a mesh no coarser than its width, since the curves'
+ * vertices are kept: this width is to such faces what the thickness is to walls. It is not
+ * measured beyond twice the thickness and the gap of the nearest surface sample (a wider face
+ * does not set the size over a thinner wall) nor beyond a quarter of the bounding box's
+ * diagonal.
  *
  * \tparam GeomTraits a model of `Kernel` with `double` coordinates (default:
  *   `Exact_predicates_inexact_constructions_kernel`)
@@ -96,16 +101,17 @@ public:
   struct Feature_sample
   {
     Point_3 point;  ///< on a feature edge
-    Point_3 facing; ///< the nearest point of a feature curve far from `point` along the curves
-    double width;   ///< the distance from `point` to `facing`; infinity if none is within a
-                    ///< quarter of the bounding box's diagonal
+    Point_3 facing; ///< the nearest point of a feature curve far from `point` along the curves,
+                    ///< or `point` if there is none within reach
+    double width;   ///< the distance from `point` to `facing`; infinity if none is within reach
     double length;  ///< the length of the feature edge's piece the sample stands for
   };
 
   /*!
    * samples `tm` and casts the rays.
    *
-   * \tparam TriangleMesh a model of `FaceListGraph` whose faces are triangles
+   * \tparam TriangleMesh a model of `FaceListGraph` whose faces are triangles (and of
+   *   `EdgeListGraph` and `VertexListGraph` with `edge_is_constrained_map`)
    * \tparam NamedParameters a sequence of named parameters
    *
    * \param tm a closed triangle surface, consistently oriented (either way), bounding a volume
@@ -322,13 +328,18 @@ private:
   {
     const std::size_t none = std::numeric_limits<std::size_t>::max();
     std::vector<std::size_t> node_of(num_vertices(tm), none);
+    std::map<std::array<double, 3>, std::size_t> node_at; // vertices at one place are one node
     auto node = [&](typename boost::graph_traits<TriangleMesh>::vertex_descriptor v) {
       std::size_t& n = node_of[std::size_t(get(vertex_index, v))];
       if(n == none) {
         const auto& q = get(vpm, v);
-        n = feature_nodes_.size();
-        feature_nodes_.emplace_back(CGAL::to_double(q.x()), CGAL::to_double(q.y()), CGAL::to_double(q.z()));
-        feature_adjacency_.emplace_back();
+        const std::array<double, 3> x = {CGAL::to_double(q.x()), CGAL::to_double(q.y()), CGAL::to_double(q.z())};
+        const auto inserted = node_at.emplace(x, feature_nodes_.size());
+        n = inserted.first->second;
+        if(inserted.second) {
+          feature_nodes_.emplace_back(x[0], x[1], x[2]);
+          feature_adjacency_.emplace_back();
+        }
       }
       return n;
     };
@@ -376,7 +387,12 @@ private:
     tree.build();
     const double diagonal = std::sqrt(CGAL::square(bbox_.x_span()) + CGAL::square(bbox_.y_span()) +
                                       CGAL::square(bbox_.z_span()));
-    const double reach = diagonal / 4;
+    // a face wider than the wall or the gap under it does not set the size
+    auto reach_at = [&](const Point_3& p) {
+      const Sample& nearest = samples_[nearest_sample(p)];
+      return (std::min)(diagonal / 4, 2 * (std::min)(nearest.thickness, nearest.gap));
+    };
+    const double touching = 1e-12 * diagonal;
     auto edge_length = [&](std::size_t e) {
       return std::sqrt(CGAL::squared_distance(feature_nodes_[feature_edges_[e].first], feature_nodes_[feature_edges_[e].second]));
     };
@@ -386,10 +402,10 @@ private:
           for(std::size_t i = range.begin(); i != range.end(); ++i) {
             const Piece& mine = pieces[i];
             const Point_3& p = points[i];
-            // the distance along the feature edges from p to their nodes, final up to `settled`
+            // the distance along the feature edges from p to the nodes settled so far (all those
+            // within the radius of the last settle_up_to call)
             std::unordered_map<std::size_t, double> along;
             std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> front;
-            double settled = 0;
             const double my_length = edge_length(mine.edge);
             const auto& my_edge = feature_edges_[mine.edge];
             front.push({mine.t * my_length, my_edge.first});
@@ -407,7 +423,6 @@ private:
                     front.push({top.first + next.second, next.first});
                 }
               }
-              settled = (std::max)(settled, radius);
             };
             auto distance_along = [&](const Piece& q) {
               const double length = edge_length(q.edge);
@@ -415,11 +430,12 @@ private:
               double d = std::numeric_limits<double>::infinity();
               const auto& edge = feature_edges_[q.edge];
               auto a = along.find(edge.first), b = along.find(edge.second);
-              if(a != along.end() && a->second <= settled) d = (std::min)(d, a->second + q.t * length);
-              if(b != along.end() && b->second <= settled) d = (std::min)(d, b->second + (1 - q.t) * length);
+              if(a != along.end()) d = (std::min)(d, a->second + q.t * length);
+              if(b != along.end()) d = (std::min)(d, b->second + (1 - q.t) * length);
               return d;
             };
             Feature_sample& result = feature_samples_[i];
+            const double reach = reach_at(p);
             Incremental_search search(tree, p, 0, true, Distance(point_map));
             for(auto it = search.begin(); it != search.end(); ++it) {
               const double straight = std::sqrt(it->second);
@@ -435,7 +451,7 @@ private:
                                           q.t - q.half, q.t + q.half);
               const Point_3 nearest = a + t * ab;
               const double width = std::sqrt(CGAL::squared_distance(p, nearest));
-              if(width < result.width) {
+              if(width > touching && width < result.width) { // curves that touch (an input defect) are no face
                 result.width = width;
                 result.facing = nearest;
               }
