@@ -68,9 +68,10 @@ namespace CGAL {
  * `Polygon_mesh_processing::detect_sharp_edges()` with the angle the mesh domain's features
  * are detected with) are sampled as well. The width at a feature sample is its straight
  * distance to the nearest feature curve that is far from it along the curves (the path along
- * the feature edges is more than four times as long), across a face, the inside or the outside.
- * Two curves that meet at a corner are near each other unless their angle there is under 29
- * degrees, so most corners do not count as narrow. A narrow face between two feature curves,
+ * the feature edges is more than ten times as long), across a face, the inside or the outside.
+ * Two curves that meet at a corner are near each other unless their angle there is under 11.5
+ * degrees: a face that tapers to a corner is left to the mesher's protection of the corner. A
+ * narrow face between two feature curves,
  * e.g. a step or the end of a blade, holds a mesh no coarser than its width, since the curves'
  * vertices are kept: this width is to such faces what the thickness is to walls. It is not
  * measured beyond twice the thickness and the gap of the nearest surface sample (a wider face
@@ -355,8 +356,9 @@ private:
   }
 
   // a point of another feature curve is far from a sample along the curves when the path
-  // between them along the feature edges is more than this times the straight distance
-  static constexpr double detour_ratio = 4;
+  // between them along the feature edges is more than this times the straight distance (with
+  // 4, corners under 29 degrees, the tapering faces of ordinary corners counted as narrow)
+  static constexpr double detour_ratio = 10;
 
   // the feature edges cut into pieces at most half a sample spacing long, one sample in the
   // middle of each; for each sample, the nearest piece (by increasing distance) whose sample is
