@@ -248,6 +248,9 @@ private:
     TLM::internal::optimize_lattice_mesh(c3t3, domain_, field_, TLM::Lattice::make(type), stage, options_.sliver_bound, options_.threads, 0.,
                                          report);
     r.time_s = run.time_s + report.gsm_time;
+    if(options_.verbose)
+      std::cerr << "  " << method << ": l* " << report.edge_length << ", particles " << report.particle_time
+                << " s, connection " << report.connection_time << " s, last stage " << report.gsm_time << " s\n";
     measure(c3t3, TLM::Lattice::make(type), r);
     return r;
   }

@@ -8,6 +8,8 @@
 
 #include "lattice_test_support.h"
 
+#include <set>
+
 
 // ---------------------------------------------------------------------------------------------
 // 1. The Gaussian Hole Kernel: gradient against central differences, symmetry of the pair.
@@ -146,6 +148,41 @@ void test_system_gradient_in_varying_field()
   // midpoint: a second-order difference (3.5e-4 here)
   CHECK_LESS(worst, 2e-3);
   VVM_CHECK(worst_without > 2e-2); // the field varies enough for the derivative to matter
+}
+
+// The pairs in a graded field: the particles' own stretches spare the lookups of far pairs, and
+// no pair within R is lost (brute force over all pairs, the frame at each pair's midpoint).
+
+void test_pairs_in_graded_field()
+{
+  // the size triples across the box (gradation 2, steeper than the thickness sizing's 0.3)
+  const Varying_field field([](const Point& p) {
+    return Eigen::Matrix3d((1 + 2 * p.x()) * rotation(0.5 * p.z(), Eigen::Vector3d(1, 1, 0).normalized()));
+  });
+  const double l = 0.04;
+  for(TLM::Lattice_type type : all_lattices) {
+    const TLM::Lattice lattice = TLM::Lattice::make(type);
+    TLMI::Particle_system<Varying_field, TLMI::No_boundary, Point> s(lattice, field, nullptr, l, lattice.sigma,
+                                                                    lattice.neighbor_radius);
+    CGAL::Random r(23);
+    for(int k = 0; k < 1500; ++k)
+      s.add(Eigen::Vector3d(r.get_double(0, 1), r.get_double(0, 0.3), r.get_double(0, 0.3)), TLM::Particle_kind::FREE);
+    s.build_pairs();
+    std::set<std::pair<std::size_t, std::size_t>> built, expected;
+    for(const auto& pr : s.pairs()) built.emplace(pr.i, pr.j);
+    std::size_t far = 0; // pairs within the largest Euclidean radius but beyond R
+    const double radius = s.euclidean_radius();
+    for(std::size_t i = 0; i < s.size(); ++i)
+      for(std::size_t j = i + 1; j < s.size(); ++j) {
+        const Eigen::Vector3d v = s.points[i] - s.points[j];
+        if(v.norm() > radius) continue;
+        if((s.B(0.5 * (s.points[i] + s.points[j])) * v).norm() <= lattice.neighbor_radius * l) expected.emplace(i, j);
+        else ++far;
+      }
+    VVM_CHECK(expected.size() > 3 * s.size());
+    VVM_CHECK(far > expected.size()); // most candidates are far: the filter has work to do
+    VVM_CHECK(built == expected);
+  }
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -380,6 +417,7 @@ int main(int argc, char** argv)
   return vvm_test::run(argc, argv, "test_particle_system", {
       {"kernel_gradient", test_kernel_gradient},
       {"system_gradient_in_varying_field", test_system_gradient_in_varying_field},
+      {"pairs_in_graded_field", test_pairs_in_graded_field},
       {"perfect_lattice", test_perfect_lattice},
       {"deletion_and_insertion", test_deletion_and_insertion}});
 }

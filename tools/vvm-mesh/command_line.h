@@ -79,7 +79,9 @@ inline const char* hexdom_usage =
     "                      refinement)\n"
     "  --features-angle D  sharp edges of the surface (default 60; 0: none)\n"
     "  --field F           cross (default), identity, or a frame-field file\n"
-    "  --sizing S          uniform (default), or thickness: the field's frames scaled as for tet\n"
+    "  --sizing S          uniform (default), or thickness: the field's frames scaled as for tet (the\n"
+    "                      lattice breaks into non-hex cells where its size changes: on parts with\n"
+    "                      walls of very different thicknesses, far fewer hexahedra)\n"
     "  --time-limit S      stop after S seconds (field, particles, merging), with a valid mesh whose\n"
     "                      unmerged tets stay tetrahedra (default 0: none)\n"
     "  --threads N, --seed N, --json FILE, --quiet  as for tet\n";

@@ -303,6 +303,8 @@ def hex_dominant(surface, particles=None, size=None, q_bound=0.5, boundary_dista
     ``particles`` (default 30000) or ``size`` (the lattice's edge length);
     ``boundary_distance``: the boundary refinement's distance (0: none). ``surface``,
     ``features_angle``, ``field``, ``sizing``, ``threads``, ``seed``, ``progress`` as in :func:`tet_mesh`.
+    With ``sizing="thickness"`` the cubic lattice breaks into non-hex cells where its size changes:
+    parts with walls of very different thicknesses get far fewer hexahedra.
     ``time_limit``: seconds (field, particles, merging), None for none: the tets not merged by
     then stay tetrahedra and ``mesh.info["time_limit_reached"]`` is true.
 

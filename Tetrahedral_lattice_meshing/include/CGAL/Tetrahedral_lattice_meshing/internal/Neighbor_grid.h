@@ -67,7 +67,18 @@ public:
   template <class F>
   void for_each_within(const Eigen::Vector3d& p, double radius, F f) const
   {
-    if(order_.empty()) return;
+    any_within(p, radius, [&f](std::size_t j, double d2) {
+      f(j, d2);
+      return false;
+    });
+  }
+
+  /// `true` if `found(j, squared distance)` is `true` for some point `j` within `radius` of
+  /// `p`; stops at the first
+  template <class F>
+  bool any_within(const Eigen::Vector3d& p, double radius, F found) const
+  {
+    if(order_.empty()) return false;
     const double r2 = radius * radius;
     const int span = int(std::ceil(radius / h_));
     const std::array<std::int64_t, 3> c = cell_of(p);
@@ -81,11 +92,12 @@ public:
           for(std::size_t s = start_[k]; s < start_[k + 1]; ++s) {
             const std::size_t j = order_[s];
             const double d2 = ((*points_)[j] - p).squaredNorm();
-            if(d2 <= r2) f(j, d2);
+            if(d2 <= r2 && found(j, d2)) return true;
           }
         }
       }
     }
+    return false;
   }
 
 private:

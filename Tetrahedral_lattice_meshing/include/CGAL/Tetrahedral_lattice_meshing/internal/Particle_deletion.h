@@ -41,14 +41,15 @@ std::size_t delete_particles(System& s)
   const std::size_t n = s.size();
   if(n == 0) return 0;
   const double l = s.edge_length();
-  const double r = s.euclidean_radius();
+  const std::vector<double> stretch = s.stretches();
+  const double r = s.euclidean_radius(stretch);
   const Neighbor_grid grid(s.points, r);
-  // the sorted neighbour distances of each particle, in parallel
+  // the sorted neighbour distances of each particle within R (the rules look no farther), in parallel
   std::vector<std::vector<std::pair<double, std::size_t>>> near(n);
   parallel_for_each_index(n, [&](std::size_t i) {
     if(s.kinds[i] == Particle_kind::CORNER) return;
-    grid.for_each_within(s.points[i], r, [&](std::size_t j, double) {
-      if(j == i) return;
+    grid.for_each_within(s.points[i], r, [&](std::size_t j, double d2) {
+      if(j == i || !s.may_be_within(d2, stretch[i], stretch[j], s.neighbor_radius())) return;
       const Eigen::Vector3d v = s.points[i] - s.points[j];
       near[i].emplace_back((s.B(s.points[i] - 0.5 * v) * v).norm() / l, j);
     });

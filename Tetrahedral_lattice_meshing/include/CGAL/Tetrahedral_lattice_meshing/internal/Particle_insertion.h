@@ -32,6 +32,7 @@ struct Insertion_candidate
   int feature = -1;
   Eigen::Vector3d direction = Eigen::Vector3d::Zero();
   double energy = 0;
+  double stretch = 0; // T's largest stretch at the particle whose one-ring holds the site
 };
 
 /*
@@ -40,17 +41,16 @@ struct Insertion_candidate
  * if still that far). In particle order, then hole order.
  */
 template <class System>
-std::vector<Insertion_candidate> empty_sites(const System& s, double min_distance, const Neighbor_grid& grid,
-                                             double euclidean_radius)
+std::vector<Insertion_candidate> empty_sites(const System& s, double min_distance, const std::vector<double>& stretch,
+                                             const Neighbor_grid& grid, double euclidean_radius)
 {
   const std::size_t n = s.size();
   const double l = s.edge_length();
-  auto far_enough = [&](const Eigen::Vector3d& c) {
-    bool ok = true;
-    grid.for_each_within(c, euclidean_radius, [&](std::size_t j, double) {
-      if(ok && (s.B(0.5 * (c + s.points[j])) * (c - s.points[j])).norm() <= min_distance * l) ok = false;
+  auto far_enough = [&](const Eigen::Vector3d& c, double stretch_c) {
+    return !grid.any_within(c, euclidean_radius, [&](std::size_t j, double d2) {
+      return s.may_be_within(d2, stretch_c, stretch[j], min_distance) &&
+             (s.B(0.5 * (c + s.points[j])) * (c - s.points[j])).norm() <= min_distance * l;
     });
-    return ok;
   };
   std::vector<std::vector<Insertion_candidate>> local(n);
   parallel_for_each_index(n, [&](std::size_t i) {
@@ -58,7 +58,8 @@ std::vector<Insertion_candidate> empty_sites(const System& s, double min_distanc
     for(const Eigen::Vector3d& h : s.lattice().one_ring) {
       Insertion_candidate c;
       c.point = s.points[i] + l * (T * h);
-      if(far_enough(c.point)) local[i].push_back(c);
+      c.stretch = stretch[i];
+      if(far_enough(c.point, c.stretch)) local[i].push_back(c);
     }
   });
   std::vector<Insertion_candidate> out;
@@ -79,7 +80,7 @@ std::vector<Insertion_candidate> empty_sites(const System& s, double min_distanc
             c.direction = e.direction;
           }
         }
-        if(!far_enough(c.point)) continue;
+        if(!far_enough(c.point, c.stretch)) continue;
       }
       out.push_back(c);
     }
@@ -110,7 +111,8 @@ std::vector<Insertion_candidate> spread(const System& s, const std::vector<Inser
           if(it == cells.end()) continue;
           for(std::size_t m : it->second) {
             const Eigen::Vector3d v = c.point - kept[m].point;
-            if((s.B(c.point - 0.5 * v) * v).norm() <= min_distance * l) {
+            if(s.may_be_within(v.squaredNorm(), c.stretch, kept[m].stretch, min_distance) &&
+               (s.B(c.point - 0.5 * v) * v).norm() <= min_distance * l) {
               ok = false;
               break;
             }
@@ -132,16 +134,17 @@ template <class System>
 std::size_t insert_particles(System& s, double max_energy)
 {
   if(s.size() == 0) return 0;
-  const double r = s.euclidean_radius();
+  const std::vector<double> stretch = s.stretches();
+  const double r = s.euclidean_radius(stretch);
   const double d_ins = s.lattice().insertion_distance;
   const Neighbor_grid grid(s.points, r);
   // a particle within d_ins in the imagined space is within d_ins / R of the pairs' Euclidean
   // radius (both scale with the field's largest stretch): the sites' search needs no more
   // (it was a fifth of the particle optimization's time)
   std::vector<Insertion_candidate> candidates =
-      empty_sites(s, d_ins, grid, r * (std::min)(1., d_ins / s.neighbor_radius()));
+      empty_sites(s, d_ins, stretch, grid, r * (std::min)(1., d_ins / s.neighbor_radius()));
   parallel_for_each_index(candidates.size(), [&](std::size_t k) {
-    candidates[k].energy = s.energy_at(candidates[k].point, grid, r);
+    candidates[k].energy = s.energy_at(candidates[k].point, candidates[k].stretch, stretch, grid, r);
   });
   std::vector<std::size_t> order;
   for(std::size_t k = 0; k < candidates.size(); ++k)

@@ -142,9 +142,9 @@ public:
   Eigen::Matrix3d B(const Eigen::Vector3d& p) const { return Eigen::Matrix3d(field_.B(point_3(p))); }
   Eigen::Matrix3d T(const Eigen::Vector3d& p) const { return Eigen::Matrix3d(field_.T(point_3(p))); }
 
-  /// the Euclidean radius that holds every pair within R in the imagined space:
-  /// R l* times the largest stretch of T at the particles
-  double euclidean_radius() const
+  /// the largest stretch of T at each particle: the longest Euclidean vector a unit vector of
+  /// the imagined space becomes there
+  std::vector<double> stretches() const
   {
     std::vector<double> stretch(points.size(), 0.);
     parallel_for_each_index(points.size(), [&](std::size_t i) {
@@ -153,22 +153,45 @@ public:
       es.computeDirect(t.transpose() * t, Eigen::EigenvaluesOnly);
       stretch[i] = std::sqrt(std::max(es.eigenvalues().maxCoeff(), 0.));
     });
+    return stretch;
+  }
+
+  /// the Euclidean radius that holds every pair within R in the imagined space:
+  /// R l* times the largest of the particles' `stretch`
+  double euclidean_radius(const std::vector<double>& stretch) const
+  {
     double s = 0;
     for(double x : stretch) s = std::max(s, x);
     return radius_ * l_ * s;
   }
+  double euclidean_radius() const { return euclidean_radius(stretches()); }
+
+  /*
+   * false if two points at the squared Euclidean distance `d2`, where T stretches by at most
+   * `stretch_p` and `stretch_q`, are farther apart than `imagined` l* in the imagined space,
+   * provided that the field between them stretches less than `stretch_variation` times as
+   * much: the cheap test that spares the field's lookups at the midpoints of far pairs (on a
+   * graded field most pairs within the largest Euclidean radius are far)
+   */
+  bool may_be_within(double d2, double stretch_p, double stretch_q, double imagined) const
+  {
+    const double r = imagined * l_ * stretch_variation * std::max(stretch_p, stretch_q);
+    return d2 <= r * r;
+  }
+  static constexpr double stretch_variation = 2.;
 
   /// the pairs of particles within R of each other (in the imagined space), with their B,
   /// and the derivatives of B at the particles if the field varies
   void build_pairs()
   {
     build_frame_derivatives();
-    const double r = euclidean_radius();
+    const std::vector<double> stretch = stretches();
+    const double r = euclidean_radius(stretch);
     const Neighbor_grid grid(points, r);
     std::vector<std::vector<Pair>> local(points.size());
     parallel_for_each_index(points.size(), [&](std::size_t i) {
-      grid.for_each_within(points[i], r, [&](std::size_t j, double) {
-        if(j <= i) return;
+      grid.for_each_within(points[i], r, [&](std::size_t j, double d2) {
+        if(j <= i || !may_be_within(d2, stretch[i], stretch[j], radius_)) return;
         const Eigen::Matrix3d b = B(0.5 * (points[i] + points[j]));
         if((b * (points[i] - points[j])).norm() <= radius_ * l_)
           local[i].push_back(Pair{std::uint32_t(i), std::uint32_t(j), b});
@@ -420,12 +443,16 @@ public:
     }
   }
 
-  /// the GHK energy a particle at `c` would have with the particles near it (each pair once)
-  double energy_at(const Eigen::Vector3d& c, const Neighbor_grid& grid, double euclidean_radius) const
+  /// the GHK energy a particle at `c`, where T stretches by at most `stretch_c`, would have
+  /// with the particles within R of it (each pair once)
+  double energy_at(const Eigen::Vector3d& c, double stretch_c, const std::vector<double>& stretch,
+                   const Neighbor_grid& grid, double euclidean_radius) const
   {
     double e = 0;
-    grid.for_each_within(c, euclidean_radius, [&](std::size_t j, double) {
-      e += gaussian_hole_pair_energy(lattice_, B(0.5 * (c + points[j])), c - points[j], l_, sigma_);
+    grid.for_each_within(c, euclidean_radius, [&](std::size_t j, double d2) {
+      if(!may_be_within(d2, stretch_c, stretch[j], radius_)) return;
+      const Eigen::Matrix3d b = B(0.5 * (c + points[j]));
+      if((b * (c - points[j])).norm() <= radius_ * l_) e += gaussian_hole_pair_energy(lattice_, b, c - points[j], l_, sigma_);
     });
     return e;
   }
