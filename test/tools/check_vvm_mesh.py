@@ -325,9 +325,10 @@ def verify_optimized(source, name, min_angle=25):
     require(after["n_min_dih_lt30"] < before["n_min_dih_lt30"], f"{name}: tets under 30 not fewer")
     require(abs(after["n_vertices"] - before["n_vertices"]) <= 0.03 * before["n_vertices"],
             f"{name}: {before['n_vertices']} -> {after['n_vertices']} vertices")
-    # the guard holds the boundary's facets near the input's boundary (measured on a grid:
-    # a facet beside a feature edge may stray up to twice as far)
-    require(after["boundary_hausdorff"] <= 2 * after["boundary_distance_bound"],
+    # the guard holds the boundary's facets within the bound of the input's boundary, exactly:
+    # the input's corners and edges under a moved facet are measured, not only a grid on it
+    # (with a grid only, fandisk's boundary moved by 1.3-1.5 times the bound)
+    require(after["boundary_hausdorff"] <= (1 + 1e-6) * after["boundary_distance_bound"],
             f"{name}: boundary moved {after['boundary_hausdorff']}, bound {after['boundary_distance_bound']}")
     require("boundary moved by" in out, out)
     # and the domain's volume stays (independently of the program's measure)

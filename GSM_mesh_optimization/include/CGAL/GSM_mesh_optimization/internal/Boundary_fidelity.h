@@ -41,6 +41,16 @@
 // close enough: one short query in place of two or more of the measure, which
 // looks for the nearest of the intersections within the full reach, and a
 // predicate (`Do_intersect_surface`), which costs a fraction of a construction.
+// A boundary that starts on the surface (a mesh made elsewhere, imported with its
+// own boundary as the surface) has no initial distance to measure, and the
+// surface is piecewise linear with the initial facets as its pieces: under a
+// moved facet the distance along its normal then peaks where a corner or an
+// edge of a piece lies, which any grid can miss (the boundary of TetGen's
+// meshes moved by up to 2.4 times its bound). There the corners and edge
+// crossings of the pieces under a moved facet are measured too; so are the
+// corners next to the changed facets that lie over none of them (a ridge the
+// new facets cut), and the corners of the feature curves (polylines) along a
+// moved chord: the boundary then stays within its bound both ways.
 // Everything is computed at the start (the facets in parallel); later
 // calls only read it and the domain, so they are thread-safe.
 
@@ -60,6 +70,9 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <iterator>
+#include <map>
+#include <memory>
 #include <tuple>
 #include <unordered_map>
 #include <vector>
@@ -78,6 +91,7 @@ class Boundary_fidelity
   typedef typename GT::Segment_3 Segment_3;
   typedef typename Tr::Vertex_handle Vertex_handle;
   typedef typename C3T3::Surface_patch_index Surface_patch_index;
+  typedef typename C3T3::Curve_index Curve_index;
 
 public:
   typedef std::array<Bare_point, 3> Triangle;
@@ -93,6 +107,11 @@ public:
   /// a moved facet whose coarse measure is over this share of its coarse bound is measured on
   /// the fine grid too
   static constexpr double fine_check_share = 0.8;
+  /// the boundary started on the surface if this share of its facets lay on it
+  static constexpr double started_on_surface_share = 0.99;
+  /// two pieces of a surface the boundary started on meet at a kink if the sine of their angle
+  /// is over the square root of this (over the rounding noise of a flat part)
+  static constexpr double kink_sin2 = 1e-18;
 
   /// `least_bound`: any facet may stray at least this far (a caller's tolerance)
   Boundary_fidelity(const C3T3& c3t3, const MeshDomain* domain, double least_bound = 0) : domain_(domain)
@@ -122,6 +141,42 @@ public:
     for(const Initial_facet& e : facets) triangles.emplace_back(e.t[0], e.t[1], e.t[2]);
     Boundary_tree boundary(triangles.begin(), triangles.end());
     boundary.accelerate_distance_queries();
+    // (a few facets may measure more: the nearest of the intersections along a normal is not
+    // always found)
+    const auto on_surface = std::count_if(facets.begin(), facets.end(), [](const Initial_facet& e) { return lies_on_surface(e); });
+    // of the pieces, only those with a kink matter: the distance to a facet along its normal
+    // is linear over a flat part (none on a flat model, where the pieces are not needed)
+    std::vector<Triangle_3> kinked;
+    if(double(on_surface) >= started_on_surface_share * double(facets.size())) {
+      std::map<std::pair<Vertex_handle, Vertex_handle>, std::vector<std::size_t>> edge_facets;
+      for(std::size_t i = 0; i < facets.size(); ++i)
+        for(int k = 0; k < 3; ++k) {
+          const Vertex_handle a = facets[i].v[k], b = facets[i].v[(k + 1) % 3];
+          edge_facets[a < b ? std::make_pair(a, b) : std::make_pair(b, a)].push_back(i);
+        }
+      std::vector<bool> has_kink(facets.size(), false);
+      for(const auto& ef : edge_facets) {
+        if(ef.second.size() != 2 || !(facets[ef.second[0]].patch == facets[ef.second[1]].patch)) continue;
+        const Vector_3 n = triangles[ef.second[0]].supporting_plane().orthogonal_vector();
+        const Vector_3 m = triangles[ef.second[1]].supporting_plane().orthogonal_vector();
+        const double sin2 = CGAL::to_double(CGAL::cross_product(n, m).squared_length()) /
+                            CGAL::to_double(n.squared_length() * m.squared_length());
+        if(sin2 > kink_sin2) has_kink[ef.second[0]] = has_kink[ef.second[1]] = true;
+      }
+      for(std::size_t i = 0; i < facets.size(); ++i)
+        if(has_kink[i]) kinked.push_back(triangles[i]);
+    }
+    if(!kinked.empty()) {
+      auto pieces = std::make_shared<Pieces>();
+      pieces->triangles = std::move(kinked);
+      pieces->tree.rebuild(pieces->triangles.begin(), pieces->triangles.end());
+      for(auto e = c3t3.edges_in_complex_begin(); e != c3t3.edges_in_complex_end(); ++e) {
+        const Vertex_handle a = e->first->vertex(e->second), b = e->first->vertex(e->third);
+        auto& points = pieces->curve_points[c3t3.curve_index(*e)];
+        for(const Vertex_handle& v : {a, b}) points.push_back(tr.geom_traits().construct_point_3_object()(tr.point(v)));
+      }
+      pieces_ = pieces;
+    }
 
     // the largest distance: only facets that measure more along their normal can raise it
     std::sort(facets.begin(), facets.end(), [](const Initial_facet& a, const Initial_facet& b) { return a.d[1] > b.d[1]; });
@@ -173,9 +228,11 @@ public:
   {
     const auto allowed = [&](bool fine) { return (std::max)({bound(v[0], fine), bound(v[1], fine), bound(v[2], fine)}); };
     const double coarse_bound = allowed(false);
-    if(deviates_at_most(t, patch, coarse_grid, 0, fine_check_share * coarse_bound)) return true;
+    if(deviates_at_most(t, patch, coarse_grid, 0, fine_check_share * coarse_bound))
+      return pieces_deviate_at_most(t, patch, allowed(true));
     return deviates_at_most(t, patch, coarse_grid, 0, coarse_bound) &&
-           deviates_at_most(t, patch, fine_grid, coarse_grid, allowed(true));
+           deviates_at_most(t, patch, fine_grid, coarse_grid, allowed(true)) &&
+           pieces_deviate_at_most(t, patch, allowed(true));
   }
 
   /// whether the part `t` of the facet `whole` (of the patch `patch`) strays from the surface
@@ -188,7 +245,186 @@ public:
     const double coarse = deviation(whole, patch, coarse_grid);
     if(!deviates_at_most(t, patch, coarse_grid, 0, (1 + slack) * coarse)) return false;
     const double fine = (std::max)(coarse, deviation(whole, patch, fine_grid, coarse_grid));
-    return deviates_at_most(t, patch, fine_grid, coarse_grid, (1 + slack) * fine);
+    return deviates_at_most(t, patch, fine_grid, coarse_grid, (1 + slack) * fine) &&
+           pieces_deviate_at_most(t, patch, (std::max)((1 + slack) * fine, floors_[1]));
+  }
+
+  /// on a boundary that started on the surface, whether the corners of the surface's pieces
+  /// near the new facets `star` (the facets around a changed part of the boundary, whose
+  /// outer edges stay) lie within the bound of their vertices `v` of them; true on others.
+  /// A corner over a ridge that the new facets cut lies over no facet's interior (each facet
+  /// alone cannot tell): its distance to the nearest point of `star` counts, unless that point
+  /// is on an outer edge (a facet outside is nearer) or the surface comes within the bound of
+  /// it on the line to the corner (the corner is on the far side of a thin part)
+  bool corners_near(const std::vector<Triangle>& star, const std::vector<std::array<Vertex_handle, 3>>& v) const
+  {
+    if(!pieces_ || star.empty()) return true;
+    double limit = 0, longest2 = 0;
+    for(const auto& w : v)
+      for(const Vertex_handle& u : w) limit = (std::max)(limit, bound(u, true));
+    std::map<std::pair<Bare_point, Bare_point>, int> edges;
+    CGAL::Bbox_3 box;
+    for(const Triangle& t : star)
+      for(int k = 0; k < 3; ++k) {
+        const Bare_point &a = t[k], &b = t[(k + 1) % 3];
+        ++edges[a < b ? std::make_pair(a, b) : std::make_pair(b, a)];
+        longest2 = (std::max)(longest2, CGAL::to_double(CGAL::squared_distance(a, b)));
+        box += a.bbox();
+      }
+    const double margin = 0.5 * std::sqrt(longest2);
+    const double tolerance = (std::max)(limit, noise_share * margin);
+    box = CGAL::Bbox_3(box.xmin() - margin, box.ymin() - margin, box.zmin() - margin, box.xmax() + margin,
+                       box.ymax() + margin, box.zmax() + margin);
+    std::vector<Segment_3> outer;
+    for(const auto& e : edges)
+      if(e.second == 1) outer.emplace_back(e.first.first, e.first.second);
+    const double limit2 = tolerance * tolerance;
+    for(const Triangle_3* near : pieces_near(box))
+      for(int k = 0; k < 3; ++k) {
+        const Bare_point& x = (*near)[k];
+        double d2 = HUGE_VAL;
+        const Triangle* nearest = nullptr;
+        for(const Triangle& t : star) {
+          const double e2 = CGAL::to_double(CGAL::squared_distance(x, Triangle_3(t[0], t[1], t[2])));
+          if(e2 < d2) {
+            d2 = e2;
+            nearest = &t;
+          }
+        }
+        if(!(d2 > limit2) || d2 > margin * margin) continue;
+        bool on_outer_edge = false;
+        for(const Segment_3& s : outer)
+          if(!(CGAL::to_double(CGAL::squared_distance(x, s)) > d2 * (1 + 1e-9))) on_outer_edge = true;
+        if(on_outer_edge) continue;
+        // the nearest point: x's projection to the facet's plane, if inside it, else on its edges
+        const Triangle& t = *nearest;
+        const Triangle_3 facet(t[0], t[1], t[2]);
+        Bare_point y = facet.supporting_plane().projection(x);
+        if(CGAL::to_double(CGAL::squared_distance(x, y)) < d2 * (1 - 1e-9)) { // not inside the facet
+          double best = HUGE_VAL;
+          for(int i = 0; i < 3; ++i) {
+            const Segment_3 s(t[i], t[(i + 1) % 3]);
+            const Vector_3 ab = s.target() - s.source();
+            const double l2 = CGAL::to_double(ab.squared_length());
+            const double u = l2 > 0 ? std::clamp(CGAL::to_double((x - s.source()) * ab) / l2, 0., 1.) : 0.;
+            const Bare_point z = s.source() + ab * u;
+            const double e2 = CGAL::to_double(CGAL::squared_distance(x, z));
+            if(e2 < best) {
+              best = e2;
+              y = z;
+            }
+          }
+        }
+        const Vector_3 r = (x - y) * (tolerance / std::sqrt(d2));
+        if(!domain_->do_intersect_surface_object()(Segment_3(y - r, y + r))) return false;
+      }
+    return true;
+  }
+
+  /// on a boundary that started on the surface, the largest distance to the chord from `o` to
+  /// `q` of the curve `curve`'s initial vertices that lie along it, the corners of the curve
+  /// (a polyline) between them; 0 on others. A vertex further from the chord than half its
+  /// length belongs to another part of the curve (or the chord is far off the arc, which
+  /// sampling the arc shows)
+  double curve_corners_deviation(const Curve_index& curve, const Bare_point& o, const Bare_point& q) const
+  {
+    if(!pieces_) return 0;
+    const auto it = pieces_->curve_points.find(curve);
+    if(it == pieces_->curve_points.end()) return 0;
+    const Vector_3 chord = q - o;
+    const double length2 = CGAL::to_double(chord.squared_length());
+    if(!(length2 > 0)) return 0;
+    double d2 = 0;
+    for(const Bare_point& x : it->second) {
+      const Vector_3 ox = x - o;
+      const double t = CGAL::to_double(ox * chord);
+      if(!(t > 0 && t < length2)) continue;
+      const double e2 = CGAL::to_double(ox.squared_length()) - t * t / length2;
+      if(e2 < 0.25 * length2) d2 = (std::max)(d2, e2);
+    }
+    return std::sqrt(d2);
+  }
+
+  /// on a boundary that started on the surface, whether the corners of the surface's pieces
+  /// under `t` and the crossings of their edges with the edges of `t` are within `limit` of
+  /// `t` along its normal, as `deviates_at_most()` measures its grid points; true on others.
+  /// With the facet's vertices, these are the points where the distance along the normal to
+  /// a piecewise linear surface peaks
+  bool pieces_deviate_at_most(const Triangle& t, const Surface_patch_index& patch, double limit) const
+  {
+    if(!pieces_) return true;
+    const Vector_3 n = CGAL::cross_product(t[1] - t[0], t[2] - t[0]);
+    const double area2 = CGAL::to_double(n.squared_length());
+    if(!(area2 > 0)) return true;
+    double longest2 = 0;
+    for(int k = 0; k < 3; ++k)
+      longest2 = (std::max)(longest2, CGAL::to_double(CGAL::squared_distance(t[k], t[(k + 1) % 3])));
+    const double longest = std::sqrt(longest2);
+    const Vector_3 reach = n * (0.5 * longest / std::sqrt(area2));
+    const double length = 0.5 * longest;
+    const double tolerance = (std::max)(limit, noise_share * length);
+    if(!(tolerance < length)) return true;
+    // the facet in a frame of its plane: u, w along it, h along its unit normal
+    const Vector_3 unit = n / std::sqrt(area2);
+    Vector_3 e1 = t[1] - t[0];
+    e1 = e1 / std::sqrt(CGAL::to_double(e1.squared_length()));
+    const Vector_3 e2 = CGAL::cross_product(unit, e1);
+    const auto coordinates = [&](const Bare_point& p) {
+      const Vector_3 d = p - t[0];
+      return std::array<double, 3>{{CGAL::to_double(d * e1), CGAL::to_double(d * e2), CGAL::to_double(d * unit)}};
+    };
+    const auto at = [&](double u, double w) { return t[0] + e1 * u + e2 * w; };
+    std::array<std::array<double, 3>, 3> c;
+    for(int k = 0; k < 3; ++k) c[k] = coordinates(t[k]);
+    // a point over which the surface lies at height `h`: close enough if that is within the
+    // tolerance, else measured as a grid point is (a nearer part of the surface may lie there)
+    const auto is_close = [&](double u, double w, double h) {
+      if(std::abs(h) <= tolerance) return true;
+      const Bare_point s = at(u, w);
+      const Vector_3 r = reach * (tolerance / length);
+      if(domain_->do_intersect_surface_object()(Segment_3(s - r, s + r))) return true;
+      return distance_along(s, reach, patch) <= tolerance;
+    };
+    const double margin = length;
+    CGAL::Bbox_3 box = t[0].bbox() + t[1].bbox() + t[2].bbox();
+    box = CGAL::Bbox_3(box.xmin() - margin, box.ymin() - margin, box.zmin() - margin, box.xmax() + margin,
+                       box.ymax() + margin, box.zmax() + margin);
+    for(const Triangle_3* near : pieces_near(box)) {
+      const Triangle_3& piece = *near;
+      std::array<std::array<double, 3>, 3> p;
+      bool is_within = true;
+      for(int k = 0; k < 3; ++k) {
+        p[k] = coordinates(piece[k]);
+        is_within = is_within && std::abs(p[k][2]) <= tolerance;
+      }
+      if(is_within) continue; // the height is linear over the piece
+      for(int k = 0; k < 3; ++k) {
+        // a corner over the facet's interior: on the left of its three edges (counterclockwise
+        // in the frame)
+        const std::array<double, 3>& a = p[k];
+        double b[3];
+        for(int i = 0; i < 3; ++i) {
+          const auto& q = c[(i + 1) % 3];
+          const auto& r = c[(i + 2) % 3];
+          b[i] = (q[0] - a[0]) * (r[1] - a[1]) - (q[1] - a[1]) * (r[0] - a[0]);
+        }
+        if(b[0] > 0 && b[1] > 0 && b[2] > 0 && std::abs(a[2]) <= length && !is_close(a[0], a[1], a[2])) return false;
+        // the crossings of the piece's edge with the facet's edges
+        const std::array<double, 3>& d = p[(k + 1) % 3];
+        for(int i = 0; i < 3; ++i) {
+          const auto& q = c[i];
+          const auto& r = c[(i + 1) % 3];
+          const double den = (d[0] - a[0]) * (r[1] - q[1]) - (d[1] - a[1]) * (r[0] - q[0]);
+          if(den == 0) continue;
+          const double s = ((q[0] - a[0]) * (r[1] - q[1]) - (q[1] - a[1]) * (r[0] - q[0])) / den; // along the piece
+          const double v = ((q[0] - a[0]) * (d[1] - a[1]) - (q[1] - a[1]) * (d[0] - a[0])) / den; // along the facet
+          if(!(s > 0 && s < 1 && v > 0 && v < 1)) continue;
+          const double h = a[2] + s * (d[2] - a[2]);
+          if(std::abs(h) <= length && !is_close(q[0] + v * (r[0] - q[0]), q[1] + v * (r[1] - q[1]), h)) return false;
+        }
+      }
+    }
+    return true;
   }
 
   /// the largest distance from the points of the grid of `t` with `m` subdivisions (and its
@@ -300,6 +536,15 @@ private:
     std::array<double, 2> d; // deviations on the coarse grid and on both
   };
 
+  // whether the facet's deviation is rounding noise
+  static bool lies_on_surface(const Initial_facet& e)
+  {
+    double longest2 = 0;
+    for(int k = 0; k < 3; ++k)
+      longest2 = (std::max)(longest2, CGAL::to_double(CGAL::squared_distance(e.t[k], e.t[(k + 1) % 3])));
+    return e.d[1] <= noise_share * 0.5 * std::sqrt(longest2);
+  }
+
   typedef typename CGAL::Kernel_traits<Bare_point>::Kernel Kernel;
   typedef typename Kernel::Triangle_3 Triangle_3;
   typedef CGAL::AABB_tree<CGAL::AABB_traits<
@@ -359,7 +604,40 @@ private:
   static constexpr int cone_rings = 3;
   static constexpr int cone_ring_rays = 8;
 
+  // collects the primitives whose boxes overlap a box: their triangles need not meet it (an
+  // exact test costs more than the few extra pieces)
+  struct Overlapping_boxes
+  {
+    const CGAL::Bbox_3& box;
+    std::vector<const Triangle_3*>& out;
+    bool go_further() const { return true; }
+    template <class Primitive>
+    void intersection(const CGAL::Bbox_3&, const Primitive& p)
+    {
+      if(CGAL::do_overlap(box, p.datum().bbox())) out.push_back(&*p.id());
+    }
+    template <class Node>
+    bool do_intersect(const CGAL::Bbox_3&, const Node& node) const { return CGAL::do_overlap(box, node.bbox()); }
+  };
+
+  std::vector<const Triangle_3*> pieces_near(const CGAL::Bbox_3& box) const
+  {
+    std::vector<const Triangle_3*> near;
+    Overlapping_boxes traits{box, near};
+    pieces_->tree.traversal(box, traits);
+    return near;
+  }
+
+  // the initial facets, the pieces of a surface the boundary started on
+  struct Pieces
+  {
+    std::vector<Triangle_3> triangles;
+    Boundary_tree tree;
+    std::map<Curve_index, std::vector<Bare_point>> curve_points; // the feature curves' vertices
+  };
+
   const MeshDomain* domain_;
+  std::shared_ptr<const Pieces> pieces_;
   std::unordered_map<Vertex_handle, std::array<double, 2>> vertex_bounds_; // coarse, fine
   std::array<double, 2> floors_ = {{0, 0}};
   double largest_ = 0;

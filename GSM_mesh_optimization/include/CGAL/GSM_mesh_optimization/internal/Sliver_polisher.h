@@ -478,7 +478,7 @@ private:
     if(surface < 0) return false;
     const auto patch = c3t3_.surface_patch_index(c, surface);
     return flips_.try_peel_boundary_cell(c, [&](const typename Tr::Facet& f, const typename Tr::Facet& g) {
-      return smoother_.is_faithful(f, patch) && smoother_.is_faithful(g, patch);
+      return smoother_.is_faithful(f, patch) && smoother_.is_faithful(g, patch) && smoother_.keeps_corners_near({f, g});
     });
   }
 

@@ -324,13 +324,17 @@ private:
   // or than the facet each halves
   bool is_faithful(const Split& s, const Bare_point& p) const
   {
+    std::vector<std::array<Bare_point, 3>> parts;
+    std::vector<std::array<Vertex_handle, 3>> vertices;
     for(const Vertex_handle& w : s.apexes) {
       const std::array<Bare_point, 3> whole{{this->bare(s.a), this->bare(s.b), this->bare(w)}};
-      for(const Vertex_handle& kept : {s.a, s.b})
-        if(!smoother_.is_faithful_part({{this->bare(kept), p, this->bare(w)}}, whole, s.patch, {{s.a, s.b, w}}))
-          return false;
+      for(const Vertex_handle& kept : {s.a, s.b}) {
+        parts.push_back({{this->bare(kept), p, this->bare(w)}});
+        vertices.push_back({{s.a, s.b, w}});
+        if(!smoother_.is_faithful_part(parts.back(), whole, s.patch, vertices.back())) return false;
+      }
     }
-    return true;
+    return smoother_.keeps_corners_near(parts, vertices);
   }
 
   void apply(const Split& s)

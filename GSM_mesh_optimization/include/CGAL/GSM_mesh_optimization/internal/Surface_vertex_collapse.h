@@ -217,13 +217,15 @@ private:
         p.new_penalty += penalty_(this->energy_.min_dihedral_angle(c, v, x));
     if(!p.critical && !(p.new_penalty < p.old_penalty)) return false;
     // the facets that take w for v
+    std::vector<std::array<Bare_point, 3>> star;
+    std::vector<std::array<Vertex_handle, 3>> star_vertices;
     for(const auto& f : s.facets) {
       if(f[0] == w || f[1] == w) continue;
-      if(!smoother_.is_faithful_triangle({{this->bare(w), this->bare(f[0]), this->bare(f[1])}}, s.patch,
-                                         {{w, f[0], f[1]}}))
-        return false;
+      star.push_back({{this->bare(w), this->bare(f[0]), this->bare(f[1])}});
+      star_vertices.push_back({{w, f[0], f[1]}});
+      if(!smoother_.is_faithful_triangle(star.back(), s.patch, star_vertices.back())) return false;
     }
-    return true;
+    return smoother_.keeps_corners_near(star, star_vertices);
   }
 
   // whether (u, w) is an edge of a surface facet

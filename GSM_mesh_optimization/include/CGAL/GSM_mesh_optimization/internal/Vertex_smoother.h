@@ -456,6 +456,8 @@ public:
     else {
       if(r.dimension == 3) return true;
       if(r.dimension == 1 && !keeps_curve_faithful(r, p)) return false;
+      std::vector<typename Fidelity::Triangle> star;
+      std::vector<std::array<Vertex_handle, 3>> star_vertices;
       for(const Facet& f : r.surface_facets) {
         typename Fidelity::Triangle t;
         std::array<Vertex_handle, 3> vs;
@@ -464,9 +466,41 @@ public:
           t[k] = vs[k] == r.v ? p : bare(vs[k]);
         }
         if(!fidelity_->is_faithful(t, c3t3_.surface_patch_index(f), vs)) return false;
+        star.push_back(t);
+        star_vertices.push_back(vs);
       }
-      return true;
+      return fidelity_->corners_near(star, star_vertices);
     }
+  }
+
+  /// the new surface facets `t` on the vertices `v` keep the corners of the surface near
+  /// them within the boundary's bound (Boundary_fidelity::corners_near)
+  bool keeps_corners_near(const std::vector<std::array<Bare_point, 3>>& t,
+                          const std::vector<std::array<Vertex_handle, 3>>& v) const
+  {
+    if constexpr(std::is_void<MeshDomain>::value) {
+      CGAL_USE(t);
+      CGAL_USE(v);
+      return false;
+    } else
+      return fidelity_ && fidelity_->corners_near(t, v);
+  }
+
+  /// the new surface facets `f` keep the corners of the surface near them within the
+  /// boundary's bound
+  bool keeps_corners_near(const std::vector<Facet>& f) const
+  {
+    std::vector<std::array<Bare_point, 3>> t;
+    std::vector<std::array<Vertex_handle, 3>> v;
+    for(const Facet& g : f) {
+      v.emplace_back();
+      t.emplace_back();
+      for(int k = 0; k < 3; ++k) {
+        v.back()[k] = g.first->vertex((g.second + 1 + k) & 3);
+        t.back()[k] = bare(v.back()[k]);
+      }
+    }
+    return keeps_corners_near(t, v);
   }
 
   /// the facet `f`, on the patch `patch`, strays no further from the surface than
@@ -626,7 +660,8 @@ private:
   // The edges of a feature-curve vertex are chords of the curve: where the curve bends between
   // two vertices, the chord cuts the corner, and the facets' measure along their normals misses
   // it (beside a feature edge the normal lines leave the patch). So the arc between the vertex
-  // and each curve neighbour is sampled, and its distance to the chord bounded.
+  // and each curve neighbour is sampled, and its distance to the chord bounded (with the
+  // polyline's own corners where the boundary started on the surface).
   static constexpr int curve_samples = 8;
 
   // the largest distance from the curve between `o` and `q` (its arc, sampled) to the chord
@@ -650,7 +685,7 @@ private:
         const double t = std::clamp(x.dot(u), 0., chord);
         d = (std::max)(d, (x - t * u).norm());
       }
-      return d;
+      return fidelity_ ? (std::max)(d, fidelity_->curve_corners_deviation(curve, o, q)) : d;
     } else {
       CGAL_USE(curve);
       CGAL_USE(o);
