@@ -353,19 +353,13 @@ public:
   bool pieces_deviate_at_most(const Triangle& t, const Surface_patch_index& patch, double limit) const
   {
     if(!pieces_) return true;
-    const Vector_3 n = CGAL::cross_product(t[1] - t[0], t[2] - t[0]);
-    const double area2 = CGAL::to_double(n.squared_length());
-    if(!(area2 > 0)) return true;
-    double longest2 = 0;
-    for(int k = 0; k < 3; ++k)
-      longest2 = (std::max)(longest2, CGAL::to_double(CGAL::squared_distance(t[k], t[(k + 1) % 3])));
-    const double longest = std::sqrt(longest2);
-    const Vector_3 reach = n * (0.5 * longest / std::sqrt(area2));
-    const double length = 0.5 * longest;
+    Vector_3 reach;
+    if(!measuring_reach(t, reach)) return true;
+    const double length = std::sqrt(CGAL::to_double(reach.squared_length()));
     const double tolerance = (std::max)(limit, noise_share * length);
     if(!(tolerance < length)) return true;
     // the facet in a frame of its plane: u, w along it, h along its unit normal
-    const Vector_3 unit = n / std::sqrt(area2);
+    const Vector_3 unit = reach / length;
     Vector_3 e1 = t[1] - t[0];
     e1 = e1 / std::sqrt(CGAL::to_double(e1.squared_length()));
     const Vector_3 e2 = CGAL::cross_product(unit, e1);
@@ -476,18 +470,28 @@ public:
   static constexpr double noise_share = 1e-6;
 
 private:
+  // the half normal segment of `t` along which its points are measured: along its normal, half
+  // its longest edge long (far beyond a chord's sag, short of the far side of thin parts);
+  // false if `t` is flat
+  static bool measuring_reach(const Triangle& t, Vector_3& reach)
+  {
+    const Vector_3 n = CGAL::cross_product(t[1] - t[0], t[2] - t[0]);
+    const double area2 = CGAL::to_double(n.squared_length());
+    if(!(area2 > 0)) return false;
+    double longest2 = 0;
+    for(int k = 0; k < 3; ++k)
+      longest2 = (std::max)(longest2, CGAL::to_double(CGAL::squared_distance(t[k], t[(k + 1) % 3])));
+    reach = n * (0.5 * std::sqrt(longest2 / area2));
+    return true;
+  }
+
   // calls `f(point, reach)` on the points of `deviation()`'s grid, with the half normal segment
   // along which they are measured, while it returns true; false if it returned false
   template <class F>
   static bool for_each_grid_point(const Triangle& t, int m, int known, const F& f)
   {
-    const Vector_3 n = CGAL::cross_product(t[1] - t[0], t[2] - t[0]);
-    const double area2 = CGAL::to_double(n.squared_length());
-    if(!(area2 > 0)) return true;
-    double longest2 = 0;
-    for(int k = 0; k < 3; ++k)
-      longest2 = (std::max)(longest2, CGAL::to_double(CGAL::squared_distance(t[k], t[(k + 1) % 3])));
-    const Vector_3 reach = n * (0.5 * std::sqrt(longest2 / area2));
+    Vector_3 reach;
+    if(!measuring_reach(t, reach)) return true;
     if(!f(CGAL::centroid(t[0], t[1], t[2]), reach)) return false;
     const int step = known > 0 ? m / known : 0;
     for(int i = 0; i < m; ++i)
