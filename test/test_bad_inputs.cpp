@@ -296,11 +296,32 @@ void test_complex_from_tetrahedra()
   fan.push_back(Point(0.3, 0.3, -1));
   refused(entry, "a facet of three cells", {"facet"},
           make(fan, {Tet{{0, 1, 2, 3}}, Tet{{0, 1, 2, 4}}, Tet{{0, 2, 1, 5}}}));
-  // two tets that share one vertex only: the boundary is not manifold there
+  // two tets that share one vertex only are taken (each has its own copy of it in the
+  // triangulation, given back as one vertex)
   std::vector<Point> bowtie = tet_points;
   for(const Point& p : {Point(0, 0, 0), Point(-1, 0, 0), Point(0, -1, 0), Point(0, 0, -1)}) bowtie.push_back(p);
-  refused(entry, "non-manifold vertex", {"manifold"}, make(bowtie, {Tet{{0, 1, 2, 3}}, Tet{{0, 6, 5, 7}}}));
+  {
+    From from(bowtie, {Tet{{0, 1, 2, 3}}, Tet{{0, 6, 5, 7}}});
+    std::vector<Point> points;
+    std::vector<Tet> tets;
+    std::vector<int> labels;
+    from.get_tetrahedra(points, tets, labels);
+    vvm_test::check(from.c3t3().triangulation().number_of_vertices() == 8 && points.size() == 7 && tets.size() == 2,
+                    "Complex_from_tetrahedra_3 on two tets that share a vertex", __FILE__, __LINE__);
+  }
   refused(entry, "two vertices at one point", {"same point"}, make(bowtie, {Tet{{0, 1, 2, 3}}, Tet{{4, 6, 5, 7}}}));
+  // a ring of cells around a vertex, which they all touch through their facets: the boundary
+  // facets there form two fans (above and below), the vertex is not manifold
+  std::vector<Point> ring{Point(0, 0, 0)};
+  for(double z : {0.5, -0.5})
+    for(int i = 0; i < 6; ++i) ring.push_back(Point(std::cos(i * CGAL_PI / 3), std::sin(i * CGAL_PI / 3), z));
+  std::vector<Tet> ring_cells;
+  for(std::size_t i = 0; i < 6; ++i) {
+    const std::size_t p = 1 + i, pn = 1 + (i + 1) % 6, r = 7 + i, rn = 7 + (i + 1) % 6;
+    ring_cells.push_back(Tet{{p, 0, pn, r}});
+    ring_cells.push_back(Tet{{pn, 0, rn, r}});
+  }
+  refused(entry, "non-manifold vertex", {"manifold"}, make(ring, ring_cells));
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -99,8 +99,9 @@ inline const char* optimize_usage =
     "                      of its mean edge length; 0: boundary vertices slide on its flat parts only)\n"
     "  --fixed-boundary    move interior vertices only\n"
     "  --threads N, --seed N, --time-limit S, --json FILE, --quiet  as for tet\n"
-    "Refused (exit 2): inverted or flat tetrahedra, a facet of three tetrahedra, a boundary that is not\n"
-    "a manifold, non-finite coordinates, cells other than tetrahedra.\n";
+    "Parts that touch at a vertex or along edges are taken (the vertices where they touch stay in place).\n"
+    "Refused (exit 2): inverted or flat tetrahedra, a facet of three tetrahedra, non-finite coordinates,\n"
+    "cells other than tetrahedra.\n";
 
 inline const char* quality_usage =
     "usage: vvm-mesh quality MESH [--json FILE]\n"

@@ -25,6 +25,7 @@
 #include <map>
 #include <memory>
 #include <numeric>
+#include <set>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -51,7 +52,11 @@ namespace GSM_mesh_optimization {
  *
  * The triangulation holds exactly the given cells (no cell outside the domain: its
  * infinite cells rest on the boundary facets, as in `CGAL::IO::read_MEDIT()`), so its
- * boundary need not be convex. A mesh of several parts, or with cavities, is taken (its
+ * boundary need not be convex. Where parts of the mesh touch at vertices or along edges
+ * without sharing a facet (as where a surface of `make_mesh_3()` pinches two close parts
+ * together), each part has its own copy of the vertices there, in the triangulation only:
+ * they are corners of the domain, never moved, and `get_tetrahedra()` gives them back as one
+ * vertex. A mesh of several parts, or with cavities, is taken (its
  * boundary is then not connected: the triangulation is fine for the local changes of
  * `gsm_optimize_mesh_3()`, not for a traversal of the infinite vertex's cells).
  *
@@ -93,8 +98,10 @@ public:
    * \throws std::invalid_argument naming the problem if there is no tetrahedron, an index
    *   is out of range, a coordinate is not finite, two vertices are at the same point, the
    *   cells are not all of one orientation
-   *   or one is flat, a facet is shared by more than two cells, a vertex of the boundary is
-   *   not manifold (its boundary facets do not form one fan), or the sizes do not match.
+   *   or one is flat, a facet is shared by more than two cells, an edge of the boundary has
+   *   more than two boundary facets where the parts meeting there also share a facet, a
+   *   vertex of the boundary is not manifold (its boundary facets do not form one fan where
+   *   its cells form one part), or the sizes do not match.
    */
   Complex_from_tetrahedra_3(const std::vector<Point_3>& points, const std::vector<Tetrahedron>& tetrahedra,
                             const std::vector<int>& labels = {}, double features_angle = 60)
@@ -107,6 +114,7 @@ public:
       throw std::invalid_argument("the features angle must be in [0, 180] degrees");
     compact_vertices(points, tetrahedra);
     orient_cells();
+    split_pinched_vertices();
     label_cells(labels);
     collect_surfaces(features_angle);
     build_domain();
@@ -138,7 +146,8 @@ public:
     for(auto c = c3t3_.cells_in_complex_begin(); c != c3t3_.cells_in_complex_end(); ++c) {
       Tetrahedron t;
       for(int i = 0; i < 4; ++i) {
-        const auto inserted = index.emplace(c->vertex(i), points.size());
+        const auto copy = copied_.find(c->vertex(i));
+      const auto inserted = index.emplace(copy == copied_.end() ? c->vertex(i) : copy->second, points.size());
         if(inserted.second) points.push_back(tr.geom_traits().construct_point_3_object()(tr.point(c, i)));
         t[i] = inserted.first->second;
       }
@@ -209,6 +218,48 @@ private:
                                   std::to_string(negative) + " of the other)");
     if(negative > 0)
       for(Tetrahedron& t : tets_) std::swap(t[0], t[1]);
+  }
+
+  // Where parts of the mesh touch at a vertex only, or along edges, the cells around such a
+  // vertex form several parts (connected through the facets at the vertex) and the
+  // triangulation's infinite cells, which rest on the boundary, cannot be joined there: each
+  // part but the first gets its own copy of the vertex (a corner, never moved).
+  void split_pinched_vertices()
+  {
+    std::vector<std::vector<std::size_t>> cells_at(points_.size());
+    for(std::size_t k = 0; k < tets_.size(); ++k)
+      for(std::size_t v : tets_[k]) cells_at[v].push_back(k);
+    n_ = points_.size();
+    for(std::size_t v = 0; v < n_; ++v) {
+      const std::vector<std::size_t>& cells = cells_at[v];
+      std::vector<std::size_t> parent(cells.size());
+      std::iota(parent.begin(), parent.end(), 0);
+      auto find = [&parent](std::size_t x) {
+        while(parent[x] != x) x = parent[x] = parent[parent[x]];
+        return x;
+      };
+      std::map<Edge, std::size_t> first_cell_on; // the edge opposite v in a facet at v
+      for(std::size_t a = 0; a < cells.size(); ++a) {
+        std::vector<std::size_t> others;
+        for(std::size_t u : tets_[cells[a]])
+          if(u != v) others.push_back(u);
+        for(int i = 0; i < 3; ++i) {
+          const auto inserted = first_cell_on.emplace(edge(others[i], others[(i + 1) % 3]), a);
+          if(!inserted.second) parent[find(a)] = find(inserted.first->second);
+        }
+      }
+      std::map<std::size_t, std::size_t> copy_of_part; // root -> vertex
+      for(std::size_t a = 0; a < cells.size(); ++a) {
+        const auto inserted = copy_of_part.emplace(find(a), copy_of_part.empty() ? v : points_.size());
+        if(inserted.second && inserted.first->second != v) {
+          points_.push_back(points_[v]);
+          copy_of_.push_back(v);
+        }
+        for(std::size_t& u : tets_[cells[a]])
+          if(u == v) u = inserted.first->second;
+      }
+      if(copy_of_part.size() > 1) pinched_.push_back(v);
+    }
   }
 
   // subdomain indices 1, 2, ... in the order of the sorted labels (0 is "outside" in a C3T3)
@@ -377,9 +428,21 @@ private:
     }
     curve_index_.clear();
     domain_->add_features(polylines.begin(), polylines.end(), std::back_inserter(curve_index_));
+    std::vector<std::pair<typename Mesh_domain::Corner_index, Point_3>> corners;
+    domain_->get_corners(std::back_inserter(corners));
+    std::set<Point_3> at_corner;
+    for(const auto& c : corners) at_corner.insert(c.second);
+    for(std::size_t v : pinched_)
+      if(at_corner.insert(points_[v]).second) domain_->add_corner(points_[v]);
   }
 
-  // the feature edges as polylines between corners (vertices where not two of them meet),
+  bool is_pinched(std::size_t v) const
+  {
+    return v >= n_ || std::binary_search(pinched_.begin(), pinched_.end(), v);
+  }
+
+  // the feature edges as polylines between corners (vertices where not two of them meet, and
+  // the vertices where parts touch),
   // and closed ones (first point repeated at the end)
   void make_polylines()
   {
@@ -395,7 +458,7 @@ private:
       std::size_t previous = start, current = next;
       used[edge(start, next)] = true;
       line.push_back(current);
-      while(adjacent[current].size() == 2 && current != start) {
+      while(adjacent[current].size() == 2 && current != start && !is_pinched(current)) {
         const std::size_t n = adjacent[current][0] == previous ? adjacent[current][1] : adjacent[current][0];
         if(used[edge(current, n)]) break;
         used[edge(current, n)] = true;
@@ -406,7 +469,7 @@ private:
       polylines_.push_back(line);
     };
     for(const auto& a : adjacent)
-      if(a.second.size() != 2)
+      if(a.second.size() != 2 || is_pinched(a.first))
         for(std::size_t n : a.second)
           if(!used[edge(a.first, n)]) walk(a.first, n);
     for(const Edge& e : feature_edges_) // what is left are cycles
@@ -458,6 +521,7 @@ private:
         c3t3_.set_index(vertices[v + 1], domain_->index_from_curve_index(curve_index_[l]));
       }
     }
+    for(std::size_t c = 0; c < copy_of_.size(); ++c) copied_[vertices[n_ + c + 1]] = vertices[copy_of_[c] + 1];
     std::vector<std::pair<typename Mesh_domain::Corner_index, Point_3>> corners;
     domain_->get_corners(std::back_inserter(corners));
     std::map<Point_3, typename Mesh_domain::Corner_index> corner_at;
@@ -474,6 +538,10 @@ private:
 
   std::vector<Point_3> points_;
   std::vector<Tetrahedron> tets_;
+  std::vector<std::size_t> pinched_;       // vertices where parts touch (split_pinched_vertices())
+  std::vector<std::size_t> copy_of_;       // the vertex each copy, points_[n_ + c], copies
+  std::size_t n_ = 0;                      // the number of vertices before the copies
+  std::map<typename Triangulation::Vertex_handle, typename Triangulation::Vertex_handle> copied_; // copy -> vertex
   std::vector<int> subdomain_;
   std::vector<int> label_of_subdomain_;
   std::vector<Triangle> facets_;

@@ -45,8 +45,7 @@
 // own boundary as the surface) has no initial distance to measure, and the
 // surface is piecewise linear with the initial facets as its pieces: under a
 // moved facet the distance along its normal then peaks where a corner or an
-// edge of a piece lies, which any grid can miss (the boundary of TetGen's
-// meshes moved by up to 2.4 times its bound). There the corners and edge
+// edge of a piece lies, which any grid can miss. There the corners and edge
 // crossings of the pieces under a moved facet are measured too; so are the
 // corners next to the changed facets that lie over none of them (a ridge the
 // new facets cut), and the corners of the feature curves (polylines) along a
