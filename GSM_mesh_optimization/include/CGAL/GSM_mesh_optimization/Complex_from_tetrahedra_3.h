@@ -352,8 +352,8 @@ private:
     return CGAL::cross_product(points_[f[1]] - points_[f[0]], points_[f[2]] - points_[f[0]]);
   }
 
-  // the boundary facets around a vertex form one fan, cycle or chain (else two parts touch at
-  // the vertex and the triangulation's boundary is not a surface there)
+  // the boundary facets around a vertex form one fan, cycle or chain (else, its cells being
+  // one part since split_pinched_vertices(), they ring it: its boundary is not a surface there)
   void check_manifold_vertices() const
   {
     std::map<std::size_t, std::vector<std::size_t>> vertex_facets;
@@ -378,7 +378,7 @@ private:
       for(std::size_t a = 1; a < fs.size(); ++a)
         if(find(a) != find(0))
           throw std::invalid_argument("the boundary is not a manifold at vertex (" + to_string(points_[vf.first]) +
-                                      "): two parts of the mesh touch there");
+                                      "): its boundary facets form more than one fan");
     }
   }
 
