@@ -147,7 +147,7 @@ public:
       Tetrahedron t;
       for(int i = 0; i < 4; ++i) {
         const auto copy = copied_.find(c->vertex(i));
-      const auto inserted = index.emplace(copy == copied_.end() ? c->vertex(i) : copy->second, points.size());
+        const auto inserted = index.emplace(copy == copied_.end() ? c->vertex(i) : copy->second, points.size());
         if(inserted.second) points.push_back(tr.geom_traits().construct_point_3_object()(tr.point(c, i)));
         t[i] = inserted.first->second;
       }
