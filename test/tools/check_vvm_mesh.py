@@ -470,6 +470,40 @@ def check_optimize_pinched():
     verify_optimized(work("pinched.mesh"), "pinched")
 
 
+def check_render():
+    """tools/render_mesh.py: a tet mesh coloured by its smallest angles, a hex-dominant one by cell
+    type, side by side; bad input refused with exit 2 and no picture"""
+    script = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools", "render_mesh.py")
+    import matplotlib.image
+    run(["tet", data("sphere966.off"), "-o", work("sphere.mesh"), "--vertices", "1000", "--method", "perturb+exude",
+         "--quiet"])
+    run(["hexdom", data("cube.off"), "-o", work("cube.vtu"), "--particles", "500", "--quiet"])
+
+    def render(meshes, png, expect=0):
+        result = subprocess.run([sys.executable, script] + meshes + ["-o", png], stdout=subprocess.PIPE,
+                                stderr=subprocess.PIPE, text=True)
+        require(result.returncode == expect, f"render_mesh {meshes} exited with {result.returncode}:\n{result.stderr}")
+        return result.stderr
+
+    def pixels(png):
+        image = matplotlib.image.imread(png)[:, :, :3]
+        return image.reshape(-1, 3)
+
+    render([work("sphere.mesh")], work("sphere.png"))
+    p = pixels(work("sphere.png"))
+    coloured = p[(p < 0.9).any(axis=1)]
+    require(len(coloured) > 0.05 * len(p), f"sphere.png: {len(coloured)} of {len(p)} pixels drawn")
+    green = coloured[(coloured[:, 1] > coloured[:, 0] + 0.1) & (coloured[:, 1] > coloured[:, 2] + 0.1)]
+    require(len(green) > 0.3 * len(coloured), f"sphere.png: {len(green)} green pixels of {len(coloured)}")
+    render([work("cube.vtu"), work("sphere.mesh")], work("both.png"))
+    p = pixels(work("both.png"))
+    blue_grey = p[(p[:, 2] > p[:, 0] + 0.08) & (p[:, 2] < 0.95)]
+    require(len(blue_grey) > 0.02 * len(p), f"both.png: {len(blue_grey)} hexahedron pixels of {len(p)}")
+    for bad, words in (([work("missing.mesh")], "cannot read"), ([data("cube.off")], "no tetrahedron")):
+        err = render(bad, work("bad.png"), expect=2)
+        require(words in err and not os.path.exists(work("bad.png")), f"render_mesh {bad}: {err}")
+
+
 CHECKS = {name[len("check_"):]: f for name, f in globals().items() if name.startswith("check_") and callable(f)}
 
 
