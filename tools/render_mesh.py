@@ -4,7 +4,7 @@
 """Renders volume meshes to a PNG: the mesh cut by a plane, so that the inside shows.
 
 usage: render_mesh.py MESH [MESH ...] -o OUT.png [--cut x|y|z] [--at F] [--view AZIMUTH,ELEVATION]
-                      [--title T ...] [--width INCHES] [--dpi N]
+                      [--title T ...] [--histogram] [--width INCHES] [--dpi N]
 
 Each MESH (any file meshio reads: .mesh, .msh, .vtu) is one panel, side by side. The cells whose
 centroid lies beyond the plane normal to the `--cut` axis at fraction `--at` of the bounding box
@@ -12,7 +12,9 @@ centroid lies beyond the plane normal to the `--cut` axis at fraction `--at` of 
 are drawn: the mesh's boundary on one side and the cut through its volume. A tetrahedral mesh is
 coloured by each cell's smallest dihedral angle (red under 10 degrees, green at 50 and over,
 with a colour bar); a mesh with hexahedra, prisms or pyramids by cell type (hexahedra grey-blue,
-prisms orange, pyramids yellow, tetrahedra red). Uses numpy, meshio and matplotlib (Debian's
+prisms orange, pyramids yellow, tetrahedra red). With `--histogram`, each panel of tetrahedra
+has below it the histogram of all its tetrahedra's smallest dihedral angles (5-degree bins, counts
+on a log scale). Uses numpy, meshio and matplotlib (Debian's
 python3-matplotlib); no display needed.
 """
 
@@ -49,9 +51,10 @@ def smallest_dihedral_angles(points, tets):
     """the smallest dihedral angle of each tetrahedron, in degrees"""
     p = points[tets]
     faces = [(1, 2, 3), (0, 2, 3), (0, 1, 3), (0, 1, 2)]
-    normals = []
-    for a, b, c in faces:
+    normals = []  # of the face opposite each vertex, pointing away from it
+    for i, (a, b, c) in enumerate(faces):
         n = np.cross(p[:, b] - p[:, a], p[:, c] - p[:, a])
+        n *= -np.sign(np.einsum("ij,ij->i", n, p[:, i] - p[:, a]))[:, None]
         normals.append(n / np.maximum(np.linalg.norm(n, axis=1), 1e-300)[:, None])
     angles = [180.0 - np.degrees(np.arccos(np.clip(np.einsum("ij,ij->i", normals[i], normals[j]), -1, 1)))
               for i in range(4) for j in range(i + 1, 4)]
@@ -106,6 +109,8 @@ def draw(ax, path, axis, at, view, title):
     except Exception as e:  # meshio raises many kinds for a bad file
         fail(f"cannot read {path}: {e}")
     points, shown, by_angle = cut_faces(mesh, axis, at)
+    tets = [np.asarray(b.data) for b in mesh.cells if b.type == "tetra" and len(b.data)]
+    angles_of_all = np.concatenate([smallest_dihedral_angles(points, t) for t in tets]) if tets else None
     polygons = [polygon for polygon, _ in shown]
     if by_angle:
         angles = np.array([value for _, value in shown])
@@ -127,7 +132,23 @@ def draw(ax, path, axis, at, view, title):
     ax.set_axis_off()
     if title:
         ax.set_title(title, fontsize=10)
-    return by_angle
+    return by_angle, angles_of_all
+
+
+def draw_histogram(ax, angles):
+    """the smallest dihedral angles of all tetrahedra, 5-degree bins coloured as the cells"""
+    edges = np.arange(0, 95, 5.0)
+    counts, _ = np.histogram(angles, bins=edges)
+    centres = (edges[:-1] + edges[1:]) / 2
+    colours = plt.get_cmap("RdYlGn")((np.clip(centres, *ANGLE_RANGE) - ANGLE_RANGE[0]) / (ANGLE_RANGE[1] - ANGLE_RANGE[0]))
+    ax.bar(centres, np.maximum(counts, 0.5), width=4.5, color=colours, edgecolor=(0.2, 0.2, 0.2), linewidth=0.3)
+    ax.set_yscale("log")
+    ax.set_ylim(0.8, None)
+    ax.set_xlim(0, 90)
+    ax.set_xlabel("smallest dihedral angle (degrees)", fontsize=8)
+    ax.set_ylabel("tetrahedra", fontsize=8)
+    ax.tick_params(labelsize=7)
+    ax.set_title(f"smallest {angles.min():.1f}°, {int((angles < 30).sum())} under 30°", fontsize=8)
 
 
 def main():
@@ -138,6 +159,7 @@ def main():
     parser.add_argument("--at", type=float, default=0.5)
     parser.add_argument("--view", default="30,25")
     parser.add_argument("--title", action="append", default=[], help="a panel's title, once per mesh")
+    parser.add_argument("--histogram", action="store_true", help="the smallest angles' histogram under each tet panel")
     parser.add_argument("--width", type=float, default=4.0, help="inches per panel")
     parser.add_argument("--dpi", type=int, default=110)
     args = parser.parse_args()
@@ -155,21 +177,26 @@ def main():
     if len(titles) != len(args.meshes):
         fail(f"{len(titles)} titles for {len(args.meshes)} meshes")
     n = len(args.meshes)
-    figure = plt.figure(figsize=(args.width * n, args.width))
+    rows = 2 if args.histogram else 1
+    figure = plt.figure(figsize=(args.width * n, args.width * (1.45 if args.histogram else 1)))
+    grid = figure.add_gridspec(rows, n, height_ratios=[1, 0.45][:rows], hspace=0.25)
     by_angle = by_type = False
     for i, (path, title) in enumerate(zip(args.meshes, titles)):
-        ax = figure.add_subplot(1, n, i + 1, projection="3d")
-        if draw(ax, path, "xyz".index(args.cut), args.at, view, title):
+        ax = figure.add_subplot(grid[0, i], projection="3d")
+        coloured_by_angle, angles = draw(ax, path, "xyz".index(args.cut), args.at, view, title)
+        if coloured_by_angle:
             by_angle = True
         else:
             by_type = True
+        if args.histogram and angles is not None:
+            draw_histogram(figure.add_subplot(grid[1, i]), angles)
     if by_type:
         names = {"hexahedron": "hexahedra", "wedge": "prisms", "pyramid": "pyramids", "tetra": "tetrahedra"}
         figure.legend(handles=[Patch(color=TYPE_COLOURS[t], label=names[t]) for t in names], loc="lower center",
                       ncol=4, frameon=False, fontsize=9)
     if by_angle:
         bar = figure.colorbar(plt.cm.ScalarMappable(norm=plt.Normalize(*ANGLE_RANGE), cmap="RdYlGn"),
-                              ax=figure.axes, shrink=0.6, pad=0.02)
+                              ax=[a for a in figure.axes if a.name == "3d"], shrink=0.6, pad=0.02)
         bar.set_label("smallest dihedral angle (degrees)")
     figure.savefig(args.output, dpi=args.dpi, bbox_inches="tight")
     print(f"wrote {args.output}")

@@ -489,6 +489,15 @@ def check_render():
         image = matplotlib.image.imread(png)[:, :, :3]
         return image.reshape(-1, 3)
 
+    # its angles are vvm-mesh quality's
+    sys.path.insert(0, os.path.dirname(script))
+    import render_mesh
+    run(["quality", work("sphere.mesh"), "--json", work("sphere.json")])
+    r = report(work("sphere.json"))
+    mesh = meshio.read(work("sphere.mesh"))
+    angles = render_mesh.smallest_dihedral_angles(np.asarray(mesh.points, dtype=float), mesh.cells_dict["tetra"])
+    require(abs(angles.min() - r["theta_min"]) < 1e-4 and (angles < 30).sum() == r["n_min_dih_lt30"],
+            f"render_mesh: smallest {angles.min()}, {(angles < 30).sum()} under 30; quality: {r}")
     render([work("sphere.mesh")], work("sphere.png"))
     p = pixels(work("sphere.png"))
     coloured = p[(p < 0.9).any(axis=1)]
