@@ -14,9 +14,14 @@ within two mean edge lengths of a corner, and how many have 0 to 4 vertices on t
 (the mesh's Triangles).
 """
 import argparse
+import os
+import sys
 from collections import defaultdict
 
 import numpy as np
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
+from render_mesh import smallest_dihedral_angles  # noqa: E402
 
 
 def read_off(path):
@@ -47,21 +52,6 @@ def read_medit(path):
     triangles = block("Triangles", 4, 3).astype(int) - 1
     tets = block("Tetrahedra", 5, 4).astype(int) - 1
     return points, triangles, tets
-
-
-def smallest_dihedral_angles(p):
-    """p: (n, 4, 3) corners; the smallest dihedral angle of each tet, in degrees"""
-    faces = [(1, 2, 3), (0, 2, 3), (0, 1, 3), (0, 1, 2)]
-    normals = []
-    for i, (a, b, c) in enumerate(faces):
-        n = np.cross(p[:, b] - p[:, a], p[:, c] - p[:, a])
-        n /= np.linalg.norm(n, axis=1)[:, None]
-        # outward: away from the opposite corner
-        n *= -np.sign(((p[:, i] - p[:, a]) * n).sum(1))[:, None]
-        normals.append(n)
-    angles = [180 - np.degrees(np.arccos(np.clip((normals[i] * normals[j]).sum(1), -1, 1)))
-              for i in range(4) for j in range(i + 1, 4)]
-    return np.min(angles, axis=0)
 
 
 def feature_curves(points, faces, angle):
@@ -103,7 +93,7 @@ def main():
     surface_points, surface_faces = read_off(args.surface)
     points, triangles, tets = read_medit(args.mesh)
     a, b, corners = feature_curves(surface_points, surface_faces, args.features_angle)
-    angles = smallest_dihedral_angles(points[tets])
+    angles = smallest_dihedral_angles(points, tets)
     p = points[tets]
     edge = np.cbrt(np.abs(np.einsum("ij,ij->i", p[:, 1] - p[:, 0], np.cross(p[:, 2] - p[:, 0], p[:, 3] - p[:, 0])))
                    * np.sqrt(2)).mean()  # the edge of a regular tet of the mean volume
