@@ -22,7 +22,10 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <iostream>
 #include <string>
+
+#include "example_data.h"
 
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 typedef CGAL::Labeled_mesh_domain_3<K> Mesh_domain;
@@ -99,5 +102,6 @@ int main(int argc, char** argv)
                   GSM::dissertation::adaptive_sphere_sizing(Eigen::Vector3d(0.5, 0, 0)));
   std::ofstream medit(output);
   CGAL::IO::output_to_medit(medit, c3t3);
+  std::cout << "wrote " << vvm_example::absolute(output) << "\n";
   return (medit && after.number_of_inverted_cells == 0) ? 0 : 1;
 }

@@ -22,6 +22,8 @@
 #include <iostream>
 #include <string>
 
+#include "example_data.h"
+
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 typedef CGAL::Surface_mesh<K::Point_3> Surface_mesh;
 typedef CGAL::Polyhedral_mesh_domain_with_features_3<K, Surface_mesh> Mesh_domain;
@@ -35,7 +37,7 @@ namespace params = CGAL::parameters;
 
 int main(int argc, char** argv)
 {
-  const std::string input = argc > 1 ? argv[1] : CGAL::data_file_path("meshes/fandisk.off");
+  const std::string input = argc > 1 ? argv[1] : vvm_example::data_file("fandisk.off");
   const std::string output = argc > 2 ? argv[2] : "fandisk_gsm.mesh";
   Surface_mesh surface;
   if(!CGAL::IO::read_polygon_mesh(input, surface) || surface.is_empty() || !CGAL::is_closed(surface)) {
@@ -70,5 +72,6 @@ int main(int argc, char** argv)
               after.n_min_dihedral_below[2], after.number_of_inverted_cells);
   std::ofstream medit(output);
   CGAL::IO::output_to_medit(medit, c3t3, false, true);
+  std::cout << "wrote " << vvm_example::absolute(output) << "\n";
   return (medit && after.number_of_inverted_cells == 0) ? 0 : 1;
 }

@@ -19,6 +19,8 @@
 #include <string>
 #include <vector>
 
+#include "example_data.h"
+
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 typedef CGAL::GSM_mesh_optimization::Complex_from_tetrahedra_3<K> Imported_mesh;
 namespace GSM = CGAL::GSM_mesh_optimization;
@@ -32,7 +34,7 @@ void print(const char* title, const GSM::Mesh_quality_statistics& q)
 
 int main(int argc, char** argv)
 {
-  const std::string input = argc > 1 ? argv[1] : "data/ball_in_box.mesh";
+  const std::string input = argc > 1 ? argv[1] : vvm_example::data_file("ball_in_box.mesh");
   const std::string output = argc > 2 ? argv[2] : "ball_in_box_gsm.mesh";
   try {
     // points, cells and labels, in any of the three formats
@@ -66,7 +68,7 @@ int main(int argc, char** argv)
       file.cells.push_back(c);
     }
     CGAL::Hex_dominant_meshing::IO::write_volume_mesh(output, file);
-    std::cout << "written to " << output << "\n";
+    std::cout << "wrote " << vvm_example::absolute(output) << "\n";
   } catch(const std::exception& e) {
     std::cerr << "gsm_tetrahedral_mesh_file: " << e.what() << "\n";
     return 1;

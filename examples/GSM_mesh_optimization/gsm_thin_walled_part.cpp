@@ -30,6 +30,8 @@
 #include <iostream>
 #include <string>
 
+#include "example_data.h"
+
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 typedef CGAL::Surface_mesh<K::Point_3> Surface_mesh;
 typedef CGAL::Polyhedral_mesh_domain_with_features_3<K, Surface_mesh> Mesh_domain;
@@ -43,7 +45,7 @@ namespace params = CGAL::parameters;
 
 int main(int argc, char** argv)
 {
-  const std::string input = argc > 1 ? argv[1] : "data/thin_walled/open_box.off";
+  const std::string input = argc > 1 ? argv[1] : vvm_example::data_file("thin_walled/open_box.off");
   const double scale = argc > 2 ? std::atof(argv[2]) : 1.;
   const std::string output = argc > 3 ? argv[3] : "thin_walled_gsm.mesh";
   Surface_mesh surface;
@@ -86,6 +88,7 @@ int main(int argc, char** argv)
                 after.number_of_inverted_cells);
     std::ofstream medit(output);
     CGAL::IO::output_to_medit(medit, c3t3, false, true);
+    std::cout << "wrote " << vvm_example::absolute(output) << "\n";
     return (medit && after.number_of_inverted_cells == 0) ? 0 : 1;
   } catch(const std::invalid_argument& e) {
     std::cerr << "gsm_thin_walled_part: " << e.what() << "\n";

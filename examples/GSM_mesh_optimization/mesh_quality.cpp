@@ -23,6 +23,8 @@
 #include <iostream>
 #include <string>
 
+#include "example_data.h"
+
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 typedef CGAL::Surface_mesh<K::Point_3> Surface_mesh;
 typedef CGAL::Polyhedral_mesh_domain_with_features_3<K, Surface_mesh> Mesh_domain;
@@ -46,7 +48,7 @@ void print(const char* title, const GSM::Mesh_quality_statistics& q)
 
 int main(int argc, char** argv)
 {
-  const std::string input = argc > 1 ? argv[1] : CGAL::data_file_path("meshes/elephant.off");
+  const std::string input = argc > 1 ? argv[1] : vvm_example::data_file("elephant.off");
   const std::string output = argc > 2 ? argv[2] : "elephant";
   Surface_mesh surface;
   if(!CGAL::IO::read_polygon_mesh(input, surface) || surface.is_empty() || !CGAL::is_closed(surface)) {
@@ -69,6 +71,7 @@ int main(int argc, char** argv)
   GSM::IO::write_VTU_with_quality(vtu, c3t3);
   std::ofstream medit(output + ".mesh");
   CGAL::IO::output_to_medit(medit, c3t3, false, true);
-  std::cout << "wrote " << output << ".vtu and " << output << ".mesh\n";
+  std::cout << "wrote " << vvm_example::absolute(output) << "\n";
+  std::cout << "wrote " << vvm_example::absolute(output + ".vtu") << " and " << vvm_example::absolute(output + ".mesh") << "\n";
   return (vtu && medit && q.number_of_inverted_cells == 0) ? 0 : 1;
 }

@@ -32,8 +32,11 @@
 #include <cstdio>
 #include <cstdlib>
 #include <stdexcept>
+#include <iostream>
 #include <string>
 #include <vector>
+
+#include "example_data.h"
 
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 typedef CGAL::Surface_mesh<K::Point_3> Surface_mesh;
@@ -100,7 +103,9 @@ bool mesh_cube(const std::string& name, Surface_mesh sm, double volume, const Fr
               s.number_of_nonconforming_faces, r.particle_time + r.tetrahedra_time + r.merge_time, r.particle_time,
               r.tetrahedra_time, r.merge_time);
 
-  HDM::IO::write_VTU(dir + "/cube_" + name + ".vtu", mesh, {{"scaled_jacobian", HDM::cell_scaled_jacobians(mesh, B)}});
+  const std::string file = dir + "/cube_" + name + ".vtu";
+  HDM::IO::write_VTU(file, mesh, {{"scaled_jacobian", HDM::cell_scaled_jacobians(mesh, B)}});
+  std::cout << "wrote " << vvm_example::absolute(file) << "\n";
 
   // the cells fill the domain up to the particles' hull
   return mesh.number_of_cells() > 0 && s.number_of_hexahedra > 0 && s.number_of_inverted_cells == 0 &&

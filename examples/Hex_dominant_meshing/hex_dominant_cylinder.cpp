@@ -31,8 +31,11 @@
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
+#include <iostream>
 #include <string>
 #include <vector>
+
+#include "example_data.h"
 
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 typedef CGAL::Surface_mesh<K::Point_3> Surface_mesh;
@@ -94,7 +97,9 @@ HDM::Hex_dominant_statistics mesh_tube(const std::string& name, const Domain& do
               s.number_of_nonconforming_faces, r.particle_time + r.tetrahedra_time + r.merge_time, r.particle_time,
               r.tetrahedra_time, r.merge_time);
 
-  HDM::IO::write_VTU(dir + "/" + name + ".vtu", mesh, {{"scaled_jacobian", HDM::cell_scaled_jacobians(mesh, B)}});
+  const std::string file = dir + "/" + name + ".vtu";
+  HDM::IO::write_VTU(file, mesh, {{"scaled_jacobian", HDM::cell_scaled_jacobians(mesh, B)}});
+  std::cout << "wrote " << vvm_example::absolute(file) << "\n";
   return s;
 }
 

@@ -30,11 +30,10 @@
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
+#include <iostream>
 #include <string>
 
-#ifndef VVM_DATA_DIR
-#define VVM_DATA_DIR "data"
-#endif
+#include "example_data.h"
 
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 typedef CGAL::Surface_mesh<K::Point_3> Surface_mesh;
@@ -46,7 +45,7 @@ namespace TLM = CGAL::Tetrahedral_lattice_meshing;
 
 int main(int argc, char** argv)
 {
-  const std::string input = argc > 1 ? argv[1] : std::string(VVM_DATA_DIR) + "/fandisk.off";
+  const std::string input = argc > 1 ? argv[1] : vvm_example::data_file("fandisk.off");
   const std::size_t particles = argc > 2 ? std::strtoul(argv[2], nullptr, 10) : 3000;
   const std::string prefix = argc > 3 ? argv[3] : "fandisk_hex";
 
@@ -108,7 +107,7 @@ int main(int argc, char** argv)
     HDM::IO::write_VTU(prefix + ".vtu", mesh);
     HDM::IO::write_MSH(prefix + ".msh", mesh);
     HDM::IO::write_MEDIT(prefix + ".mesh", mesh);
-    std::printf("wrote %s.vtu, %s.msh, %s.mesh\n", prefix.c_str(), prefix.c_str(), prefix.c_str());
+    std::cout << "wrote " << vvm_example::absolute(prefix) << ".vtu, .msh and .mesh\n";
   } catch(const std::exception& e) {
     std::fprintf(stderr, "hex_dominant_polyhedral_domain: %s\n", e.what());
     return EXIT_FAILURE;

@@ -23,6 +23,8 @@
 #include <string>
 #include <vector>
 
+#include "example_data.h"
+
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 namespace FF = CGAL::Frame_fields;
 
@@ -72,6 +74,7 @@ int main(int argc, char** argv)
   }
   std::ifstream in(prefix + ".frames");
   const FF::Discrete_frame_field_3<K> back = FF::IO::read_frame_field<K>(in);
-  std::cout << "read back " << back.frames().size() << " frames\n";
+  std::cout << "wrote " << vvm_example::absolute(prefix + ".vtu") << " and " << vvm_example::absolute(prefix + ".frames")
+            << ", read back " << back.frames().size() << " frames\n";
   return back.frames().size() == g.field.frames().size() && a.max < 1 ? 0 : 1;
 }

@@ -1,7 +1,7 @@
 // Copyright (c) 2026 VVM contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// generate_frame_field INPUT [--vertices N] [--features-angle DEG] [--out FILE.vtu]
+// generate_frame_field [INPUT] [--vertices N] [--features-angle DEG] [--out FILE.vtu]
 //                      [--frames FILE] [--singular FILE.vtu] [--curves FILE.vtu] [--json FILE] [--iterations K]
 //                      [--tolerance X] [--seed S] [--verbose]
 //
@@ -9,6 +9,8 @@
 // edges protected above DEG), generates the boundary-aligned cross field on
 // it, writes the field (VTU for ParaView, and/or the text format), its
 // singular edges and curves and a JSON report. Exit code 2 with a message on bad input or options.
+// With no INPUT it does so for the bundled fandisk.off, its sharp edges at 60 degrees, and writes
+// fandisk.frames and fandisk_field.vtu in the current folder.
 
 // make_mesh_3.h first: with CGAL_LINKED_WITH_TBB, Mesh_3 relies on TBB headers it includes
 #include <CGAL/make_mesh_3.h>
@@ -40,6 +42,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "example_data.h"
+
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 typedef CGAL::Surface_mesh<K::Point_3> Surface_mesh;
 typedef CGAL::Polyhedral_mesh_domain_with_features_3<K, Surface_mesh> Domain;
@@ -56,10 +60,11 @@ struct Usage_error : std::runtime_error
 };
 
 const char* usage =
-    "usage: generate_frame_field INPUT [--vertices N] [--features-angle DEG] [--out FILE.vtu]\n"
+    "usage: generate_frame_field [INPUT] [--vertices N] [--features-angle DEG] [--out FILE.vtu]\n"
     "                            [--frames FILE] [--singular FILE.vtu] [--curves FILE.vtu] [--json FILE] [--iterations K]\n"
     "                            [--tolerance X] [--seed S] [--verbose]\n"
-    "  INPUT             closed triangle surface (OFF, OBJ, PLY, STL, ...)\n"
+    "  INPUT             closed triangle surface (OFF, OBJ, PLY, STL, ...); none: the bundled fandisk.off\n"
+    "                    with --features-angle 60 --frames fandisk.frames --out fandisk_field.vtu\n"
     "  --vertices N      about N mesh vertices (default 10000)\n"
     "  --features-angle  protect and align with the edges sharper than DEG degrees (default 0: none)\n"
     "  --out FILE.vtu    the field for ParaView (axis_1..3 point arrays)\n"
@@ -95,6 +100,7 @@ double parse_number(const std::string& option, const std::string& text)
 Options parse(int argc, char** argv)
 {
   Options o;
+  bool features_angle_given = false;
   for(int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     auto value = [&]() -> std::string {
@@ -107,6 +113,7 @@ Options parse(int argc, char** argv)
       o.vertices = long(n);
     } else if(a == "--features-angle") {
       o.features_angle = parse_number(a, value());
+      features_angle_given = true;
       if(o.features_angle < 0 || o.features_angle > 180)
         throw Usage_error("--features-angle must be in [0, 180] degrees");
     } else if(a == "--iterations") {
@@ -133,7 +140,12 @@ Options parse(int argc, char** argv)
     else if(o.input.empty()) o.input = a;
     else throw Usage_error("more than one input ('" + o.input + "', '" + a + "')");
   }
-  if(o.input.empty()) throw Usage_error("no input surface");
+  if(o.input.empty()) {
+    o.input = vvm_example::data_file("fandisk.off");
+    if(!features_angle_given) o.features_angle = 60;
+    if(o.vtu.empty() && o.frames.empty() && o.singular.empty() && o.curves.empty() && o.json.empty())
+      o.frames = "fandisk.frames", o.vtu = "fandisk_field.vtu";
+  }
   return o;
 }
 
@@ -222,6 +234,9 @@ int run(const Options& o)
     if(!os) throw std::runtime_error("cannot write '" + o.curves + "'");
     FF::IO::write_polylines_VTU(os, g.field.points(), g.singular_curves);
   }
+  // stdout holds the JSON report only
+  for(const std::string& file : {o.vtu, o.frames, o.singular, o.curves})
+    if(!file.empty()) std::cerr << "wrote " << vvm_example::absolute(file) << "\n";
   total.stop();
   double longest_curve = 0, curves_length = 0;
   std::size_t closed_curves = 0;

@@ -22,7 +22,10 @@
 
 #include <cstdio>
 #include <fstream>
+#include <iostream>
 #include <string>
+
+#include "example_data.h"
 
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 typedef CGAL::Surface_mesh<K::Point_3> Surface_mesh;
@@ -54,8 +57,10 @@ void report(const std::string& name, const C3T3& c3t3, const FrameField& field, 
               name.c_str(), r.number_of_particles, q.number_of_cells, q.min_dihedral_angle,
               q.mean_min_dihedral_angle, q.max_dihedral_angle, q.n_min_dihedral_below[3], a.mean, r.particle_time,
               r.connection_time, r.gsm_time);
-  std::ofstream os(dir + "/" + name + ".mesh");
+  const std::string file = dir + "/" + name + ".mesh";
+  std::ofstream os(file);
   CGAL::IO::output_to_medit(os, c3t3, false, true);
+  std::cout << "wrote " << vvm_example::absolute(file) << "\n";
 }
 
 int main(int argc, char** argv)

@@ -22,7 +22,10 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <iostream>
 #include <string>
+
+#include "example_data.h"
 
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 typedef CGAL::Labeled_mesh_domain_3<K> Domain;
@@ -62,5 +65,6 @@ int main(int argc, char** argv)
               q.min_dihedral_angle, q.mean_min_dihedral_angle, q.n_min_dihedral_below[1], q.n_min_dihedral_below[3]);
   std::ofstream os(output);
   CGAL::IO::output_to_medit(os, c3t3, false, true);
+  std::cout << "wrote " << vvm_example::absolute(output) << "\n";
   return 0;
 }

@@ -29,6 +29,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "example_data.h"
+
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 typedef CGAL::Surface_mesh<K::Point_3> Surface_mesh;
 typedef CGAL::Polyhedral_mesh_domain_with_features_3<K, Surface_mesh> Domain;
@@ -38,7 +40,7 @@ namespace TLM = CGAL::Tetrahedral_lattice_meshing;
 
 int main(int argc, char** argv)
 {
-  const std::string input = argc > 1 ? argv[1] : std::string("data/fandisk.off");
+  const std::string input = argc > 1 ? argv[1] : vvm_example::data_file("fandisk.off");
   const std::size_t particles = argc > 2 ? std::strtoul(argv[2], nullptr, 10) : 5000;
   const std::string output = argc > 3 ? argv[3] : "fandisk_bcc.mesh";
 
@@ -63,6 +65,7 @@ int main(int argc, char** argv)
                 r.connection_time, r.gsm_time);
     std::ofstream os(output);
     CGAL::IO::output_to_medit(os, c3t3, false, true);
+    std::cout << "wrote " << vvm_example::absolute(output) << "\n";
   } catch(const std::invalid_argument& e) {
     std::cerr << "lattice_mesh_polyhedral_domain: " << e.what() << "\n";
     return EXIT_FAILURE;

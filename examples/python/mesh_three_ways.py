@@ -61,7 +61,7 @@ def main():
     figure.tight_layout()
     plot = os.path.join(args.out, "dihedral_histograms.png")
     figure.savefig(plot, dpi=120)
-    print("wrote", ", ".join(sorted(os.listdir(args.out))), "in", args.out)
+    print("wrote", ", ".join(sorted(os.listdir(args.out))), "in", os.path.abspath(args.out))
 
 
 if __name__ == "__main__":

@@ -184,7 +184,6 @@ cases = [
     ([empty], "empty"),
     ([garbage], "cannot read"),
     ([open_surface], "open"),
-    ([], "no input"),
     ([cube, "--vertices", "0"], "--vertices"),
     ([cube, "--vertices", "-5"], "--vertices"),
     ([cube, "--vertices", "ten"], "--vertices"),
