@@ -413,8 +413,8 @@ void test_frame_fields()
   refused(generate, "empty complex", {"no cell"}, [] { CGAL::Frame_fields::generate_cross_field_3(C3T3()); });
   refused(generate, "number_of_iterations -1", {"iterations"}, [&] { CGAL::Frame_fields::generate_cross_field_3(c3t3, params::number_of_iterations(-1)); }, same);
   refused(generate, "smoothing_tolerance NaN", {"tolerance"}, [&] { CGAL::Frame_fields::generate_cross_field_3(c3t3, CGAL::Frame_fields::parameters::smoothing_tolerance(nan)); }, same);
-  refused(generate, "edge_length 0", {"edge_length"}, [&] { CGAL::Frame_fields::generate_cross_field_3(c3t3, CGAL::Frame_fields::parameters::edge_length(0.)); }, same);
-  refused(generate, "edge_length NaN", {"edge_length"}, [&] { CGAL::Frame_fields::generate_cross_field_3(c3t3, CGAL::Frame_fields::parameters::edge_length(nan)); }, same);
+  refused(generate, "axis_length 0", {"axis_length"}, [&] { CGAL::Frame_fields::generate_cross_field_3(c3t3, CGAL::Frame_fields::parameters::axis_length(0.)); }, same);
+  refused(generate, "axis_length NaN", {"axis_length"}, [&] { CGAL::Frame_fields::generate_cross_field_3(c3t3, CGAL::Frame_fields::parameters::axis_length(nan)); }, same);
   refused(generate, "NaN coordinate", {"finite"}, [&] { CGAL::Frame_fields::generate_cross_field_3(nan_mesh()); });
   const std::string on_tr = "generate_cross_field_3 (triangulation)";
   CGAL::Delaunay_triangulation_3<K> cube;

@@ -58,7 +58,7 @@ int main(int argc, char** argv)
     std::cout << "  smoothing round " << round << ": energy " << energy << "\n";
   };
   const FF::Generated_cross_field_3<K> g = FF::generate_cross_field_3(
-      dt, FF::parameters::features_angle(60, FF::parameters::edge_length(1. / 6, CGAL::parameters::visitor(progress))));
+      dt, FF::parameters::features_angle(60, FF::parameters::axis_length(1. / 6, CGAL::parameters::visitor(progress))));
   const FF::Boundary_alignment_statistics a = FF::boundary_alignment_statistics(g);
   std::cout << "generated: " << g.field.points().size() << " frames, " << g.singular_edges.size()
             << " singular edges of " << g.number_of_interior_edges << " (" << g.singular_curves.size()

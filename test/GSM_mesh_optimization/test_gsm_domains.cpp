@@ -142,17 +142,17 @@ void test_threads_fields_and_boundary()
   VVM_CHECK(q_short.min_dihedral_angle > q_flips.min_dihedral_angle);
   VVM_CHECK(q_short.n_min_dihedral_below[3] < q_flips.n_min_dihedral_below[3]);
 
-  // mean_angle_moves after the same polishing: a higher mean smallest angle, no cell under 40
+  // mean-angle moves after the same polishing: a higher mean smallest angle, no cell under 40
   // that was not (each move keeps its star's count under the bound + 10 and its worst cell
   // over the bound or where it was); a cost that no move can pay leaves the polished mesh as
   // it is; a negative threshold is refused
   Implicit_c3t3 raised = initial, unpaid = initial;
-  CGAL::gsm_optimize_mesh_3(raised, domain, GSM::parameters::mean_angle_moves(60, polish_only));
+  CGAL::gsm_optimize_mesh_3(raised, domain, GSM::parameters::mean_angle_threshold(60, polish_only));
   typedef Implicit_c3t3::Triangulation::Vertex_handle Implicit_vertex;
   CGAL::gsm_optimize_mesh_3(unpaid, domain, GSM::parameters::vertex_move_cost(
       [&unpaid](const Implicit_vertex& v, const Eigen::Vector3d& x) {
         return 1e12 * (x - GSM::internal::to_eigen(unpaid.triangulation().point(v))).norm();
-      }, GSM::parameters::mean_angle_moves(60, polish_only)));
+      }, GSM::parameters::mean_angle_threshold(60, polish_only)));
   VVM_CHECK(complex_is_valid(raised));
   const auto q_raised = GSM::mesh_quality_statistics(raised);
   std::printf("  mean-angle moves (under 60) after the polishing: mean smallest angle %.3f against %.3f, "
@@ -173,8 +173,8 @@ void test_threads_fields_and_boundary()
   bool refused = false;
   try {
     Implicit_c3t3 copy = initial;
-    CGAL::gsm_optimize_mesh_3(copy, domain, GSM::parameters::mean_angle_moves(-1));
-  } catch(const std::invalid_argument& e) { refused = std::string(e.what()).find("mean_angle_moves") != std::string::npos; }
+    CGAL::gsm_optimize_mesh_3(copy, domain, GSM::parameters::mean_angle_threshold(-1));
+  } catch(const std::invalid_argument& e) { refused = std::string(e.what()).find("mean_angle_threshold") != std::string::npos; }
   VVM_CHECK(refused);
 
   // h and 4h (a power of two: the fitted scale is then exactly the same)

@@ -40,6 +40,11 @@ void test_make_hex_dominant_mesh_on_cube()
   VVM_CHECK(s.scaled_jacobian_min > 0.5);
   VVM_CHECK(std::abs(s.total_volume - 8.) < 0.08); // the particles' hull on the cube's surface
   for(const auto& c : mesh.cells) VVM_CHECK(c.subdomain_index == 1);
+  // the field given as a named parameter (to the overload without a positional field) is the same field
+  const Mesh named = CGAL::make_hex_dominant_mesh_3<Cube_c3t3>(
+      domain, HDM::parameters::frame_field(Constant_field(), TLM::parameters::edge_length(0.25,
+          TLM::parameters::number_of_threads(2, CGAL::parameters::random_seed(3u)))));
+  VVM_CHECK_EQUAL(vvm_test::hex_dominant_hash(named), vvm_test::hex_dominant_hash(mesh));
 
   VVM_CHECK(throws([&] { CGAL::make_hex_dominant_mesh_3<Cube_c3t3>(domain, Constant_field(), TLM::parameters::lattice(TLM::Lattice_type::BCC)); }));
   VVM_CHECK(throws([&] { CGAL::make_hex_dominant_mesh_3<Cube_c3t3>(domain, Constant_field(), TLM::parameters::edge_length(-1.)); }));

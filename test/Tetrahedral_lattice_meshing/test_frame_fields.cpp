@@ -480,7 +480,7 @@ void test_cube()
   const std::vector<Point> points = jittered_cube_grid(8, r);
   const Delaunay dt(points.begin(), points.end());
   const FF::Generated_cross_field_3<K> g =
-      FF::generate_cross_field_3(dt, FF::parameters::edge_length(0.25));
+      FF::generate_cross_field_3(dt, FF::parameters::axis_length(0.25));
   const FF::Boundary_alignment_statistics a = FF::boundary_alignment_statistics(g);
   const double worst = worst_axis_deviation_deg(g);
   std::cout << "cube (Delaunay): " << g.field.points().size() << " vertices, worst axis deviation " << worst
@@ -531,7 +531,7 @@ void test_cube()
   for(int i = 0; i < 20; ++i) flat.emplace_back(r.get_double(), r.get_double(), 0);
   VVM_CHECK(throws_invalid_argument([&] { FF::generate_cross_field_3(Delaunay(flat.begin(), flat.end())); }, "no cell"));
   VVM_CHECK(throws_invalid_argument([&] { FF::generate_cross_field_3(C3T3()); }, "no cell"));
-  VVM_CHECK(throws_invalid_argument([&] { FF::generate_cross_field_3(dt, FF::parameters::edge_length(0.)); }, "edge_length"));
+  VVM_CHECK(throws_invalid_argument([&] { FF::generate_cross_field_3(dt, FF::parameters::axis_length(0.)); }, "axis_length"));
   VVM_CHECK(throws_invalid_argument([&] {
     FF::generate_cross_field_3(dt, FF::parameters::features_angle(std::numeric_limits<double>::quiet_NaN())); }, "features_angle"));
   VVM_CHECK(throws_invalid_argument([&] {

@@ -221,7 +221,7 @@ void test_polishing_bound()
   auto mesh = [&](TLM::Lattice_mesh_optimization stage, double bound, double mean_angle_threshold = 60) {
     return CGAL::make_lattice_mesh_3<Sphere_c3t3>(domain, Constant_field(),
         TLM::parameters::number_of_particles(std::size_t(1500), TLM::parameters::mesh_optimization(stage,
-            GSM::parameters::sliver_bound(bound, GSM::parameters::mean_angle_moves(mean_angle_threshold,
+            GSM::parameters::sliver_bound(bound, GSM::parameters::mean_angle_threshold(mean_angle_threshold,
                 CGAL::parameters::random_seed(4u))))));
   };
   auto vertices = [](const Sphere_c3t3& c3t3) {
@@ -661,6 +661,18 @@ void test_lattice_mesh_in_stretched_field()
   // no flat cell: the FCC octahedra's six corners are cospherical, and a tie left as it is
   // can keep the flat tet of the octahedron's square (Metric_Delaunay_flips::break_ties_by_shape)
   VVM_CHECK(q.min_dihedral_angle > 30);
+
+  // the field given as a named parameter (to the overload without a positional field) is the same field
+  const Cube_c3t3 named = CGAL::make_lattice_mesh_3<Cube_c3t3>(domain,
+      TLM::parameters::frame_field(std::cref(field), TLM::parameters::lattice(TLM::Lattice_type::FCC,
+          TLM::parameters::edge_length(0.25, TLM::parameters::mesh_optimization(TLM::Lattice_mesh_optimization::NONE,
+              CGAL::parameters::random_seed(3u))))));
+  VVM_CHECK_EQUAL(vvm_test::complex_hash(named), vvm_test::complex_hash(c3t3));
+  const auto particles = CGAL::lattice_particles_3(domain, field,
+      TLM::parameters::lattice(TLM::Lattice_type::FCC, TLM::parameters::edge_length(0.25)));
+  const auto named_particles = CGAL::lattice_particles_3(domain,
+      TLM::parameters::frame_field(field, TLM::parameters::lattice(TLM::Lattice_type::FCC, TLM::parameters::edge_length(0.25))));
+  VVM_CHECK_EQUAL(vvm_test::particles_hash(named_particles), vvm_test::particles_hash(particles));
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -725,11 +737,11 @@ void test_bad_inputs()
   VVM_CHECK(throws_invalid_argument(
       [&]() {
         CGAL::make_lattice_mesh_3<Cube_c3t3>(domain, identity,
-            GSM::parameters::mean_angle_moves(-1., TLM::parameters::edge_length(0.5)));
+            GSM::parameters::mean_angle_threshold(-1., TLM::parameters::edge_length(0.5)));
       },
       "mean-angle threshold"));
   VVM_CHECK(throws_invalid_argument(
-      [&]() { CGAL::make_lattice_mesh_3<Cube_c3t3>(domain, GSM::parameters::mean_angle_moves(-1.)); },
+      [&]() { CGAL::make_lattice_mesh_3<Cube_c3t3>(domain, GSM::parameters::mean_angle_threshold(-1.)); },
       "mean-angle threshold"));
   std::cout << "bad inputs: " << vvm_test::passed() - passed_before << " of "
             << vvm_test::passed() - passed_before + vvm_test::failed() - failed_before

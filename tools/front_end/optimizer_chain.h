@@ -66,7 +66,7 @@ bool run_optimizer_chain(C3T3& c3t3, const MeshDomain& domain, const Tet_options
                          const Thickness_size* sizing = nullptr)
 {
   namespace P = CGAL::parameters;
-  const CGAL::GSM_mesh_optimization::internal::Time_limit limit(o.time_limit);
+  const CGAL::VVM::internal::Time_limit limit(o.time_limit);
   bool reached = false;
   if(o.method == "odt+gsm") {
     const Stage stage(progress, "odt");

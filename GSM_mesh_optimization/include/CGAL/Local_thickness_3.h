@@ -11,8 +11,8 @@
 #ifndef CGAL_LOCAL_THICKNESS_3_H
 #define CGAL_LOCAL_THICKNESS_3_H
 
+#include <CGAL/VVM/internal/Parallel_for.h>
 #include <CGAL/VVM/parameters.h>
-#include <CGAL/GSM_mesh_optimization/internal/Parallel_for.h>
 
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
@@ -281,8 +281,8 @@ private:
   {
     Triangle_tree tree(triangles_.begin(), triangles_.end());
     tree.build();
-    GSM_mesh_optimization::internal::parallel_for_ranges(
-        samples_.size(), 64, [&](const GSM_mesh_optimization::internal::Index_range& range) {
+    VVM::internal::parallel_for_ranges(
+        samples_.size(), 64, [&](const VVM::internal::Index_range& range) {
           std::vector<double> kept;
           for(std::size_t i = range.begin(); i != range.end(); ++i) {
             Sample& s = samples_[i];
@@ -398,8 +398,8 @@ private:
     auto edge_length = [&](std::size_t e) {
       return std::sqrt(CGAL::squared_distance(feature_nodes_[feature_edges_[e].first], feature_nodes_[feature_edges_[e].second]));
     };
-    GSM_mesh_optimization::internal::parallel_for_ranges(
-        pieces.size(), 16, [&](const GSM_mesh_optimization::internal::Index_range& range) {
+    VVM::internal::parallel_for_ranges(
+        pieces.size(), 16, [&](const VVM::internal::Index_range& range) {
           typedef std::pair<double, std::size_t> Entry;
           for(std::size_t i = range.begin(); i != range.end(); ++i) {
             const Piece& mine = pieces[i];

@@ -14,11 +14,11 @@
 #include <CGAL/GSM_mesh_optimization/parameters.h>
 #include <CGAL/GSM_mesh_optimization/shape_matching_energy.h>
 #include <CGAL/GSM_mesh_optimization/tetrahedron_quality.h>
+#include <CGAL/VVM/internal/Thread_limit.h>
 
 #include <CGAL/Mesh_optimization_return_code.h>
 #include <CGAL/Named_function_parameters.h>
 
-#include <tbb/global_control.h>
 
 #include <array>
 #include <cmath>
@@ -123,41 +123,41 @@ gsm_optimize(C3T3& c3t3, const MeshDomain* domain, bool boundary_fixed, const Na
   GSM::internal::check_input_mesh(c3t3);
 
   GSM::internal::GSM_options options;
-  options.max_rounds = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), 50);
-  options.time_limit = choose_parameter(get_parameter(np, CGAL::internal_np::maximum_running_time), 0.);
+  options.number_of_iterations = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), 50);
+  options.maximum_running_time = choose_parameter(get_parameter(np, CGAL::internal_np::maximum_running_time), 0.);
   options.do_flip = choose_parameter(get_parameter(np, CGAL::internal_np::do_flip), true);
-  options.do_split = choose_parameter(get_parameter(np, GSM::internal_np::split_edges), true);
-  options.shortest_moves = choose_parameter(get_parameter(np, GSM::internal_np::shortest_polishing_moves), false);
-  options.do_smooth = choose_parameter(get_parameter(np, GSM::internal_np::smooth_vertices), true);
+  options.split_edges = choose_parameter(get_parameter(np, GSM::internal_np::split_edges), true);
+  options.shortest_polishing_moves = choose_parameter(get_parameter(np, GSM::internal_np::shortest_polishing_moves), false);
+  options.smooth_vertices = choose_parameter(get_parameter(np, GSM::internal_np::smooth_vertices), true);
   options.sliver_bound = choose_parameter(get_parameter(np, GSM::internal_np::sliver_bound), 30.);
-  options.mean_angle_moves = choose_parameter(get_parameter(np, GSM::internal_np::mean_angle_moves), 0.);
+  options.mean_angle_threshold = choose_parameter(get_parameter(np, GSM::internal_np::mean_angle_threshold), 0.);
   options.verbose = choose_parameter(get_parameter(np, CGAL::internal_np::verbose), false);
-  options.convergence =
+  options.convergence_threshold =
       choose_parameter(get_parameter(np, GSM::internal_np::convergence_threshold), 1e-4);
   options.freeze_boundary =
       boundary_fixed || choose_parameter(get_parameter(np, GSM::internal_np::freeze_boundary), false);
   options.boundary_distance = choose_parameter(get_parameter(np, GSM::internal_np::boundary_distance), 0.);
   options.energy = choose_parameter(get_parameter(np, GSM::internal_np::energy),
                                     GSM::Shape_matching_energy::GSM);
-  const int threads = choose_parameter(get_parameter(np, GSM::internal_np::number_of_threads), 0);
+  const int threads = choose_parameter(get_parameter(np, VVM::internal_np::number_of_threads), 0);
   auto refuse_unless = [](bool ok, const char* what) {
     if(!ok) throw std::invalid_argument(std::string("GSM: ") + what);
   };
-  refuse_unless(options.max_rounds >= 0, "number_of_iterations must be non-negative");
-  refuse_unless(options.time_limit >= 0, "maximum_running_time must be non-negative (0: no limit)");
-  refuse_unless(options.convergence >= 0, "convergence_threshold must be non-negative");
+  refuse_unless(options.number_of_iterations >= 0, "number_of_iterations must be non-negative");
+  refuse_unless(options.maximum_running_time >= 0, "maximum_running_time must be non-negative (0: no limit)");
+  refuse_unless(options.convergence_threshold >= 0, "convergence_threshold must be non-negative");
   refuse_unless(threads >= 0, "number_of_threads must be non-negative (0: TBB's choice)");
   refuse_unless(options.sliver_bound >= 0 && options.sliver_bound < 70.5,
                 "sliver_bound must be in [0, 70.5) degrees (the sliver bound)");
-  refuse_unless(options.mean_angle_moves >= 0, "mean_angle_moves must be non-negative");
+  refuse_unless(options.mean_angle_threshold >= 0, "mean_angle_threshold must be non-negative");
   refuse_unless(options.boundary_distance >= 0 && options.boundary_distance < HUGE_VAL,
                 "boundary_distance must be non-negative and finite");
 
   // the time limit counts from here: the metric's fitting is part of the run
-  const GSM::internal::Time_limit time_limit(options.time_limit);
+  const VVM::internal::Time_limit time_limit(options.maximum_running_time);
   auto visitor = get_parameter(np, CGAL::internal_np::visitor);
   if constexpr(!std::is_same<decltype(visitor), CGAL::internal_np::Param_not_found>::value)
-    options.visitor = [visitor](const GSM::Round_report& r) { return GSM::internal::visit(visitor, r); };
+    options.visitor = [visitor](const GSM::Round_report& r) { return VVM::internal::visit(visitor, r); };
 
   auto sizing = get_parameter(np, GSM::internal_np::sizing_field);
   auto metric_field = get_parameter(np, GSM::internal_np::metric_field);
@@ -186,11 +186,8 @@ gsm_optimize(C3T3& c3t3, const MeshDomain* domain, bool boundary_fixed, const Na
   // The field gives shape and relative size; the vertex count gives the absolute size.
   metric = metric.scaled(1. / GSM::internal::estimated_edge_length(c3t3, metric, vertex_sizes.get()));
 
-  std::unique_ptr<tbb::global_control> thread_limit;
-  if(threads > 0)
-    thread_limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
-                                                         std::size_t(threads));
-  options.time_limit = time_limit.remaining();
+  const auto thread_limit = VVM::internal::thread_limit(threads);
+  options.maximum_running_time = time_limit.remaining();
   GSM::internal::GSM_optimizer<C3T3, MeshDomain> optimizer(c3t3, domain, metric, options, vertex_sizes);
   auto cost = get_parameter(np, GSM::internal_np::vertex_move_cost);
   if constexpr(!std::is_same<decltype(cost), CGAL::internal_np::Param_not_found>::value)
@@ -346,7 +343,7 @@ gsm_optimize(C3T3& c3t3, const MeshDomain* domain, bool boundary_fixed, const Na
  *     \cgalParamType{bool}
  *     \cgalParamDefault{false}
  *   \cgalParamNEnd
- *   \cgalParamNBegin{GSM_mesh_optimization::parameters::mean_angle_moves}
+ *   \cgalParamNBegin{GSM_mesh_optimization::parameters::mean_angle_threshold}
  *     \cgalParamDescription{if positive, after the polishing, passes of moves of the vertices of the
  *       cells whose smallest dihedral angle is under this many degrees: each goes up the gradient
  *       of the sum of its star's smallest angles (less its `vertex_move_cost`) when that raises the
@@ -360,7 +357,7 @@ gsm_optimize(C3T3& c3t3, const MeshDomain* domain, bool boundary_fixed, const Na
  *   \cgalParamNEnd
  *   \cgalParamNBegin{GSM_mesh_optimization::parameters::vertex_move_cost}
  *     \cgalParamDescription{what a vertex costs at a position, in degrees of its star's smallest
- *       angles, for the moves of `mean_angle_moves` only (`make_lattice_mesh_3()`: the alignment
+ *       angles, for the moves of `mean_angle_threshold` only (`make_lattice_mesh_3()`: the alignment
  *       error of its edges, so that vertices stay on the lattice unless moving pays). Called
  *       sequentially, while only the vertex asked about moves}
  *     \cgalParamType{a callable `double(C3T3::Triangulation::Vertex_handle, const Eigen::Vector3d&)`}

@@ -10,10 +10,8 @@
 
 #include <CGAL/Hex_dominant_mesh_3.h>
 #include <CGAL/Hex_dominant_meshing/parameters.h>
-#include <CGAL/Hex_dominant_meshing/internal/Boundary_refinement.h>
-#include <CGAL/Tetrahedral_lattice_meshing/internal/Metric_Delaunay_flips.h>
 #include <CGAL/tets_to_hex_dominant.h>
-#include <CGAL/make_lattice_mesh_3.h>
+#include <CGAL/VVM/internal/Lattice_tetrahedralization.h>
 
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/Real_timer.h>
@@ -63,10 +61,9 @@ namespace internal {
 
 template <class C3T3, class MeshDomain, class FrameField, class NamedParameters>
 Hex_dominant_mesh_3<typename MeshDomain::R::Point_3>
-make_hex_dominant_mesh(const MeshDomain& domain, const FrameField& field,
-                       Tetrahedral_lattice_meshing::internal::Lattice_request request, const NamedParameters& np)
+make_hex_dominant_mesh(const MeshDomain& domain, const FrameField& field, const VVM::internal::Lattice_request& request,
+                       const NamedParameters& np)
 {
-  namespace TLM_internal = Tetrahedral_lattice_meshing::internal;
   namespace HDM = Hex_dominant_meshing;
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
@@ -75,54 +72,36 @@ make_hex_dominant_mesh(const MeshDomain& domain, const FrameField& field,
   HDM::Hex_dominant_report local;
   HDM::Hex_dominant_report& r = report ? *report : local;
   r = HDM::Hex_dominant_report();
-  const GSM_mesh_optimization::internal::Time_limit time_limit(request.options.time_limit);
+  const VVM::internal::Time_limit time_limit(request.options.maximum_running_time);
   auto v = get_parameter(np, HDM::internal_np::stage_visitor);
-  auto stage_done = [&](HDM::Hex_dominant_stage s, double t) {
+  // false: the visitor asks to stop
+  auto visit_stage = [&](HDM::Hex_dominant_stage s, double t) {
     if constexpr(!std::is_same<decltype(v), CGAL::internal_np::Param_not_found>::value)
-      if(!GSM_mesh_optimization::internal::visit(v, s, t)) r.stopped_by_visitor = true;
-  };
-  // read from the merging's threads: no write to `r` here
-  const std::function<bool()> must_stop = [&]() { return r.stopped_by_visitor || time_limit.is_reached(); };
-  auto skip_stage = [&]() {
-    if(r.stopped_by_visitor) return true;
-    if(time_limit.is_reached()) r.time_limit_reached = true;
-    return r.time_limit_reached;
+      return VVM::internal::visit(v, s, t);
+    else
+      return true;
   };
 
-  request.seconds_kept_per_particle = TLM_internal::connection_seconds_per_particle;
-  auto pd = TLM_internal::lattice_particles(domain, field, request);
-  r.number_of_particles = pd.particles.size();
-  r.edge_length = pd.particles.edge_length;
-  r.particle_time = pd.particles.time;
-  r.time_limit_reached = pd.particles.time_limit_reached;
-  r.stopped_by_visitor = pd.particles.stopped_by_visitor;
-  stage_done(HDM::Hex_dominant_stage::PARTICLES, r.particle_time);
+  VVM::internal::Lattice_tetrahedralization_options options;
+  options.caller = "make_hex_dominant_mesh_3";
+  options.boundary_distance = choose_parameter(get_parameter(np, HDM::internal_np::boundary_distance), 0.);
+  options.for_tetrahedral_lattice = false;
+  // the cells of the lattice are cubes in the field's space: the tets are made Delaunay there
+  C3T3 c3t3;
+  const VVM::internal::Lattice_tetrahedralization<MeshDomain> t = VVM::internal::lattice_tetrahedralization(
+      c3t3, domain, field, request, time_limit, options,
+      [&](const VVM::internal::Lattice_tetrahedralization_report& tr) {
+        return visit_stage(HDM::Hex_dominant_stage::PARTICLES, tr.particle_time);
+      });
+  VVM::internal::copy_shared_fields(t.report, r);
+  r.tetrahedra_time = t.report.connection_time;
+  r.number_of_boundary_points = t.report.number_of_boundary_points;
+  if(!visit_stage(HDM::Hex_dominant_stage::TETRAHEDRA, r.tetrahedra_time)) r.stopped_by_visitor = true;
+  // read from the merging's threads: no write to `r` here
+  const std::function<bool()> must_stop = [&]() { return r.stopped_by_visitor || time_limit.is_reached(); };
 
   CGAL::Real_timer timer;
   timer.start();
-  C3T3 c3t3;
-  bool isotropic = true;
-  const Eigen::Matrix3d delaunay_map = TLM_internal::mean_metric_root(field, pd.particles.points, isotropic);
-  const TLM_internal::Frame_inverse_function B = [&field](const Eigen::Vector3d& x) {
-    return Eigen::Matrix3d(field.B(typename FrameField::Point_3(x[0], x[1], x[2])));
-  };
-  TLM_internal::connect_lattice_particles(c3t3, domain, pd, r.number_of_projected_particles, delaunay_map, B);
-  const double boundary_distance = choose_parameter(get_parameter(np, HDM::internal_np::boundary_distance), 0.);
-  if(boundary_distance > 0 && c3t3.number_of_cells_in_complex() > 0 && !skip_stage())
-    r.number_of_boundary_points =
-        refine_boundary(c3t3, domain, pd, boundary_distance, delaunay_map, B, r.number_of_projected_particles);
-  if(c3t3.number_of_cells_in_complex() == 0)
-    throw std::invalid_argument("make_hex_dominant_mesh_3: the particles make no cell inside the domain "
-                                "(edge length too large for it?)");
-  // the cells of the lattice are cubes in the field's space: their tets must be Delaunay there
-  if(!isotropic && !skip_stage()) {
-    TLM_internal::Metric_Delaunay_flips<C3T3> flips(c3t3, B);
-    r.number_of_metric_flips = flips.run(20 * c3t3.number_of_cells_in_complex());
-  }
-  r.tetrahedra_time = timer.time();
-  stage_done(HDM::Hex_dominant_stage::TETRAHEDRA, r.tetrahedra_time);
-
-  timer.reset();
   Tetrahedral_adjacency adjacency;
   std::vector<typename MeshDomain::R::Point_3> points;
   indexed_tets(c3t3, adjacency, points);
@@ -132,14 +111,14 @@ make_hex_dominant_mesh(const MeshDomain& domain, const FrameField& field,
                          must_stop);
   if(r.merge.stopped && !r.stopped_by_visitor) r.time_limit_reached = true;
   r.merge_time = timer.time();
-  stage_done(HDM::Hex_dominant_stage::MERGING, r.merge_time);
+  if(!visit_stage(HDM::Hex_dominant_stage::MERGING, r.merge_time)) r.stopped_by_visitor = true;
   C3T3* tets = choose_parameter(get_parameter(np, HDM::internal_np::tetrahedral_mesh), static_cast<C3T3*>(nullptr));
   if(tets) *tets = std::move(c3t3);
   return mesh;
 }
 
 template <class NamedParameters>
-Tetrahedral_lattice_meshing::internal::Lattice_request read_hex_dominant_request(const NamedParameters& np)
+VVM::internal::Lattice_request read_hex_dominant_request(const NamedParameters& np)
 {
   namespace TLM = Tetrahedral_lattice_meshing;
   using CGAL::parameters::choose_parameter;
@@ -151,7 +130,7 @@ Tetrahedral_lattice_meshing::internal::Lattice_request read_hex_dominant_request
   const double boundary_distance = choose_parameter(get_parameter(np, internal_np::boundary_distance), 0.);
   if(!(boundary_distance >= 0) || !std::isfinite(boundary_distance))
     throw std::invalid_argument("make_hex_dominant_mesh_3: the boundary distance must be non-negative and finite");
-  return TLM::internal::read_lattice_request(TLM::parameters::lattice(TLM::Lattice_type::CUBIC, np));
+  return VVM::internal::read_lattice_request(TLM::parameters::lattice(TLM::Lattice_type::CUBIC, np));
 }
 
 } // namespace internal
@@ -235,7 +214,8 @@ make_hex_dominant_mesh_3(const MeshDomain& domain, const FrameField& field,
 /*!
  * \ingroup PkgHexDominantMeshingRef
  *
- * the same with the boundary-aligned cross field of `Frame_fields::generate_cross_field_3()`
+ * the same with the frame field of the named parameter `Hex_dominant_meshing::parameters::frame_field`
+ * or, without it, the boundary-aligned cross field of `Frame_fields::generate_cross_field_3()`
  * (unit frames, one axis on the surface normal and along the feature curves), computed on a
  * `make_mesh_3()` mesh of `domain` whose edges are about \f$ l^* \f$ long.
  */
@@ -244,11 +224,10 @@ Hex_dominant_mesh_3<typename MeshDomain::R::Point_3>
 make_hex_dominant_mesh_3(const MeshDomain& domain, const Named_function_parameters<T, Tag, Base>& np)
 {
   namespace HDM_internal = Hex_dominant_meshing::internal;
-  namespace TLM_internal = Tetrahedral_lattice_meshing::internal;
-  const auto r = HDM_internal::read_hex_dominant_request(np);
-  const GSM_mesh_optimization::internal::Time_limit time_limit(r.options.time_limit);
-  const auto field = TLM_internal::default_frame_field(domain, r);
-  return HDM_internal::make_hex_dominant_mesh<C3T3>(domain, field, TLM_internal::with_time_left(r, time_limit), np);
+  return VVM::internal::with_frame_field(domain, HDM_internal::read_hex_dominant_request(np), np,
+                                        [&](const auto& field, const VVM::internal::Lattice_request& r) {
+                                          return HDM_internal::make_hex_dominant_mesh<C3T3>(domain, field, r, np);
+                                        });
 }
 
 } // namespace CGAL

@@ -8,19 +8,21 @@
 #define CGAL_TETS_TO_HEX_DOMINANT_H
 
 #include <CGAL/Hex_dominant_mesh_3.h>
-#include <CGAL/GSM_mesh_optimization/internal/Stopping.h>
 #include <CGAL/Hex_dominant_meshing/internal/Conforming_selection.h>
 #include <CGAL/Hex_dominant_meshing/internal/Merge_candidates.h>
 #include <CGAL/Hex_dominant_meshing/internal/Tetrahedral_adjacency.h>
 #include <CGAL/Hex_dominant_meshing/parameters.h>
 #include <CGAL/Tetrahedral_lattice_meshing/parameters.h>
+#include <CGAL/VVM/internal/Eigen_conversion.h>
+#include <CGAL/VVM/internal/Stopping.h>
+#include <CGAL/VVM/internal/Thread_limit.h>
+#include <CGAL/VVM/internal/Vertex_numbering.h>
 
 #include <CGAL/Mesh_complex_3_in_triangulation_3.h>
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/Real_timer.h>
 #include <CGAL/Triangulation_3.h>
 
-#include <tbb/global_control.h>
 
 #include <Eigen/Core>
 
@@ -61,18 +63,17 @@ struct Hex_dominant_merge_report
 
 namespace internal {
 
+/// `v`'s number in `mesh` and `points`, where a vertex met the first time is added
 template <class Tr, class Adjacency, class PointVector>
-std::size_t number_vertex(const Tr& tr, typename Tr::Vertex_handle v, Adjacency& mesh, PointVector& points,
-                          std::unordered_map<typename Tr::Vertex_handle, std::size_t>& index)
+std::size_t number_vertex(typename Tr::Vertex_handle v, Adjacency& mesh, PointVector& points,
+                          VVM::internal::Vertex_numbering<Tr>& number)
 {
-  auto it = index.find(v);
-  if(it != index.end()) return it->second;
-  const auto p = tr.geom_traits().construct_point_3_object()(tr.point(v));
-  const Eigen::Vector3d x(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
-  if(!x.allFinite()) throw std::invalid_argument("tets_to_hex_dominant: a vertex has a non-finite coordinate");
-  mesh.points.push_back(x);
-  points.push_back(p);
-  return index[v] = points.size() - 1;
+  return number(v, [&](const auto& p) {
+    const Eigen::Vector3d x(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+    if(!x.allFinite()) throw std::invalid_argument("tets_to_hex_dominant: a vertex has a non-finite coordinate");
+    mesh.points.push_back(x);
+    points.push_back(p);
+  });
 }
 
 /// the finite cells of a triangulation, subdomain 1
@@ -80,11 +81,11 @@ template <class GT, class TDS, class Lds, class Point>
 void indexed_tets(const Triangulation_3<GT, TDS, Lds>& tr, Tetrahedral_adjacency& mesh, std::vector<Point>& points)
 {
   typedef Triangulation_3<GT, TDS, Lds> Tr;
-  std::unordered_map<typename Tr::Vertex_handle, std::size_t> index;
+  VVM::internal::Vertex_numbering<Tr> number(tr);
   if(tr.dimension() < 3) return;
   for(auto c : tr.finite_cell_handles()) {
     std::array<std::size_t, 4> t;
-    for(int k = 0; k < 4; ++k) t[std::size_t(k)] = number_vertex(tr, c->vertex(k), mesh, points, index);
+    for(int k = 0; k < 4; ++k) t[std::size_t(k)] = number_vertex<Tr>(c->vertex(k), mesh, points, number);
     mesh.tets.push_back(t);
     mesh.subdomain.push_back(1);
   }
@@ -95,10 +96,10 @@ template <class Tr, class CornerIndex, class CurveIndex, class Point>
 void indexed_tets(const Mesh_complex_3_in_triangulation_3<Tr, CornerIndex, CurveIndex>& c3t3,
                   Tetrahedral_adjacency& mesh, std::vector<Point>& points)
 {
-  std::unordered_map<typename Tr::Vertex_handle, std::size_t> index;
+  VVM::internal::Vertex_numbering<Tr> number(c3t3.triangulation());
   for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c) {
     std::array<std::size_t, 4> t;
-    for(int k = 0; k < 4; ++k) t[std::size_t(k)] = number_vertex(c3t3.triangulation(), c->vertex(k), mesh, points, index);
+    for(int k = 0; k < 4; ++k) t[std::size_t(k)] = number_vertex<Tr>(c->vertex(k), mesh, points, number);
     mesh.tets.push_back(t);
     mesh.subdomain.push_back(int(c3t3.subdomain_index(c)));
   }
@@ -135,28 +136,22 @@ Hex_dominant_mesh_3<Point_3> merge_tets(Tetrahedral_adjacency& mesh, std::vector
   const double q_bound = choose_parameter(get_parameter(np, HDM::internal_np::quality_bound), 0.5);
   if(!(q_bound >= 0 && q_bound <= 1)) throw std::invalid_argument("tets_to_hex_dominant: the quality bound must be in [0, 1]");
   const HDM::Cell_types types = choose_parameter(get_parameter(np, HDM::internal_np::cell_types), HDM::Cell_types::ALL);
-  const int threads = choose_parameter(get_parameter(np, Tetrahedral_lattice_meshing::internal_np::number_of_threads), 0);
+  const int threads = choose_parameter(get_parameter(np, VVM::internal_np::number_of_threads), 0);
   if(threads < 0) throw std::invalid_argument("tets_to_hex_dominant: the number of threads must be non-negative");
   const double seconds = choose_parameter(get_parameter(np, CGAL::internal_np::maximum_running_time), 0.);
   if(!(seconds >= 0))
     throw std::invalid_argument("tets_to_hex_dominant: maximum_running_time must be non-negative (0: no limit)");
-  const GSM_mesh_optimization::internal::Time_limit time_limit(seconds);
+  const VVM::internal::Time_limit time_limit(seconds);
   const std::function<bool()> must_stop = [&]() { return time_limit.is_reached() || (stop && stop()); };
   HDM::Hex_dominant_merge_report* report = choose_parameter(get_parameter(np, HDM::internal_np::merge_report),
                                                             static_cast<HDM::Hex_dominant_merge_report*>(nullptr));
   Merge_candidate_finder::Frame_inverse B;
-  const auto& field = get_parameter_reference(np, HDM::internal_np::frame_field);
-  if constexpr(!std::is_same<std::decay_t<decltype(field)>, CGAL::internal_np::Param_not_found>::value) {
-    const auto& f = field; // the field itself, also when the pack holds a std::reference_wrapper to it
-    B = [&f](const Eigen::Vector3d& x) {
-      typedef typename std::decay_t<decltype(f)>::Point_3 P;
-      return Eigen::Matrix3d(f.B(P(x[0], x[1], x[2])));
-    };
-  }
+  const auto& field = get_parameter_reference(np, VVM::internal_np::frame_field);
+  // the field itself, also when the pack holds a std::reference_wrapper to it
+  if constexpr(!std::is_same<std::decay_t<decltype(field)>, CGAL::internal_np::Param_not_found>::value)
+    B = VVM::internal::frame_inverse_function(field);
 
-  std::unique_ptr<tbb::global_control> thread_limit;
-  if(threads > 0)
-    thread_limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, std::size_t(threads));
+  const auto thread_limit = VVM::internal::thread_limit(threads);
 
   Hex_dominant_mesh_3<Point_3> out;
   out.points = std::move(points);

@@ -7,20 +7,20 @@
 #ifndef CGAL_LATTICE_PARTICLES_3_H
 #define CGAL_LATTICE_PARTICLES_3_H
 
-#include <CGAL/GSM_mesh_optimization/internal/Stopping.h>
 #include <CGAL/Tetrahedral_lattice_meshing/internal/Domain_boundary.h>
 #include <CGAL/Tetrahedral_lattice_meshing/internal/Domain_cross_field.h>
 #include <CGAL/Tetrahedral_lattice_meshing/internal/Lattice_optimizer.h>
 #include <CGAL/Tetrahedral_lattice_meshing/Lattice.h>
 #include <CGAL/Tetrahedral_lattice_meshing/lattice_particle_types.h>
 #include <CGAL/Tetrahedral_lattice_meshing/parameters.h>
+#include <CGAL/VVM/internal/Stopping.h>
+#include <CGAL/VVM/internal/Thread_limit.h>
 
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/Real_timer.h>
 
 #include <Eigen/Eigenvalues>
 
-#include <tbb/global_control.h>
 
 #include <unistd.h>
 
@@ -141,29 +141,29 @@ Lattice_request read_lattice_request(const NamedParameters& np)
   const bool has_levels = given(get_parameter(np, TLM::internal_np::multiresolution_levels));
   const bool has_rounds = given(get_parameter(np, CGAL::internal_np::number_of_iterations));
   Lattice_options& o = r.options;
-  o.sigma = choose_parameter(get_parameter(np, TLM::internal_np::kernel_width), -1.);
-  o.radius = choose_parameter(get_parameter(np, TLM::internal_np::neighbor_radius), -1.);
-  o.levels = choose_parameter(get_parameter(np, TLM::internal_np::multiresolution_levels), -1);
-  o.max_rounds = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), -1);
-  o.time_limit = choose_parameter(get_parameter(np, CGAL::internal_np::maximum_running_time), 0.);
-  o.seed = choose_parameter(get_parameter(np, CGAL::internal_np::random_seed), 0u);
+  o.kernel_width = choose_parameter(get_parameter(np, TLM::internal_np::kernel_width), -1.);
+  o.neighbor_radius = choose_parameter(get_parameter(np, TLM::internal_np::neighbor_radius), -1.);
+  o.multiresolution_levels = choose_parameter(get_parameter(np, TLM::internal_np::multiresolution_levels), -1);
+  o.number_of_iterations = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), -1);
+  o.maximum_running_time = choose_parameter(get_parameter(np, CGAL::internal_np::maximum_running_time), 0.);
+  o.random_seed = choose_parameter(get_parameter(np, CGAL::internal_np::random_seed), 0u);
   o.verbose = choose_parameter(get_parameter(np, CGAL::internal_np::verbose), false);
-  r.threads = choose_parameter(get_parameter(np, TLM::internal_np::number_of_threads), 0);
+  r.threads = choose_parameter(get_parameter(np, VVM::internal_np::number_of_threads), 0);
   auto visitor = get_parameter(np, CGAL::internal_np::visitor);
   if constexpr(!std::is_same<decltype(visitor), CGAL::internal_np::Param_not_found>::value)
     o.visitor = [visitor](const Lattice_round_report& report) {
-      return GSM_mesh_optimization::internal::visit(visitor, report);
+      return VVM::internal::visit(visitor, report);
     };
 
   if(has_length && !(r.edge_length > 0 && std::isfinite(r.edge_length)))
     fail("the edge length must be positive and finite");
   if(!has_length && !(r.number_of_particles >= 1)) fail("the number of particles must be at least 1");
   if(!has_length) check_particle_count(r.number_of_particles, "number_of_particles");
-  if(has_sigma && !(o.sigma > 0 && std::isfinite(o.sigma))) fail("the kernel width must be positive and finite");
-  if(has_radius && !(o.radius > 0 && std::isfinite(o.radius))) fail("the neighbour radius must be positive and finite");
-  if(has_levels && (o.levels < 0 || o.levels > 6)) fail("the number of multiresolution levels must be in [0, 6]");
-  if(has_rounds && o.max_rounds < 0) fail("the number of rounds must be non-negative");
-  if(!(o.time_limit >= 0)) fail("the time limit must be non-negative");
+  if(has_sigma && !(o.kernel_width > 0 && std::isfinite(o.kernel_width))) fail("the kernel width must be positive and finite");
+  if(has_radius && !(o.neighbor_radius > 0 && std::isfinite(o.neighbor_radius))) fail("the neighbour radius must be positive and finite");
+  if(has_levels && (o.multiresolution_levels < 0 || o.multiresolution_levels > 6)) fail("the number of multiresolution levels must be in [0, 6]");
+  if(has_rounds && o.number_of_iterations < 0) fail("the number of rounds must be non-negative");
+  if(!(o.maximum_running_time >= 0)) fail("the time limit must be non-negative");
   if(r.threads < 0) fail("the number of threads must be non-negative");
   return r;
 }
@@ -193,7 +193,7 @@ Particles_in_domain<MeshDomain> lattice_particles(const MeshDomain& domain, cons
   typedef typename MeshDomain::R K;
   typedef typename K::Point_3 Point_3;
   auto fail = [](const std::string& m) { throw std::invalid_argument("lattice_particles_3: " + m); };
-  const GSM_mesh_optimization::internal::Time_limit time_limit(r.options.time_limit);
+  const VVM::internal::Time_limit time_limit(r.options.maximum_running_time);
 
   const auto bb = domain.bbox();
   // the frame at the box's centre, or, where it is degenerate (a hole of the domain on the
@@ -218,10 +218,7 @@ Particles_in_domain<MeshDomain> lattice_particles(const MeshDomain& domain, cons
   Particles_in_domain<MeshDomain> out;
   CGAL::Real_timer timer;
   timer.start();
-  std::unique_ptr<tbb::global_control> thread_limit;
-  if(r.threads > 0)
-    thread_limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
-                                                         std::size_t(r.threads));
+  const auto thread_limit = VVM::internal::thread_limit(r.threads);
   out.boundary = std::make_unique<Domain_boundary<MeshDomain, K>>(domain, spacing, finest);
   const Domain_measures measures = domain_measures<Domain_boundary<MeshDomain, K>, FrameField, Point_3>(*out.boundary, field);
   if(!(measures.volume > 0)) fail("the domain is empty (no volume)");
@@ -236,18 +233,18 @@ Particles_in_domain<MeshDomain> lattice_particles(const MeshDomain& domain, cons
   // each optimizer gets the time left, less what the stages after it keep
   const double reserve = r.seconds_kept_per_particle * n;
   auto optimizer = [&](Lattice_options o) {
-    if(time_limit.is_set()) o.time_limit = (std::max)(time_limit.remaining() - reserve, 1e-9);
+    if(time_limit.is_set()) o.maximum_running_time = (std::max)(time_limit.remaining() - reserve, 1e-9);
     return std::make_unique<Optimizer>(r.lattice, field, *out.boundary, l, o);
   };
-  if(r.options.levels < 0 && r.lattice.type == Lattice_type::CUBIC)
+  if(r.options.multiresolution_levels < 0 && r.lattice.type == Lattice_type::CUBIC)
     // one run: refined once from 2 l*, a box that wants one layer more or less than twice the
     // coarse lattice's often got a partial layer (a dislocation line); from 4 l* the lattice was
     // strained instead (measured: the cube at 4,000-15,000 particles all-hex at 6 of 7 counts,
     // against 3)
-    r.options.levels = n >= 3200 ? 2 : n >= 400 ? 1 : 0;
-  if(r.options.levels >= 0) {
+    r.options.multiresolution_levels = n >= 3200 ? 2 : n >= 400 ? 1 : 0;
+  if(r.options.multiresolution_levels >= 0) {
     out.particles = optimizer(r.options)->run();
-    out.particles.multiresolution_levels = r.options.levels;
+    out.particles.multiresolution_levels = r.options.multiresolution_levels;
   } else {
     // BCC and FCC: where the domain is a box (in the field's space), the lattice settles whole
     // or with a partial layer (a dislocation) depending on how its coarsest lattice fits the
@@ -262,12 +259,12 @@ Particles_in_domain<MeshDomain> lattice_particles(const MeshDomain& domain, cons
     // left to delete or insert) does not tell: the FCC lattice from 2 levels settles.
     const int k0 = n > 2000 ? int(std::ceil(std::log(n / 2000) / std::log(8.))) : 0;
     Lattice_options o = r.options;
-    o.levels = n / std::pow(8., k0 + 1) >= 20 ? k0 + 1 : k0;
+    o.multiresolution_levels = n / std::pow(8., k0 + 1) >= 20 ? k0 + 1 : k0;
     std::unique_ptr<Optimizer> kept = optimizer(o);
-    int levels = o.levels;
+    int levels = o.multiresolution_levels;
     const double energy = kept->optimize();
-    if(o.levels > k0 && !kept->stopped()) {
-      o.levels = k0;
+    if(o.multiresolution_levels > k0 && !kept->stopped()) {
+      o.multiresolution_levels = k0;
       std::unique_ptr<Optimizer> other = optimizer(o);
       const double other_energy = other->optimize();
       if(other->stopped_by_visitor()) kept->request_stop();
@@ -296,14 +293,30 @@ Frame_fields::Discrete_frame_field_3<typename Kernel_traits<typename MeshDomain:
 default_frame_field(const MeshDomain& domain,
                                                                                 const Lattice_request& r)
 {
-  return domain_cross_field(domain, edge_length_from_box(domain, 1., r), r.options.time_limit);
+  return domain_cross_field(domain, edge_length_from_box(domain, 1., r), r.options.maximum_running_time);
 }
 
 /// `r` with the time `limit` leaves as its time limit: what the stages after the field get
-inline Lattice_request with_time_left(Lattice_request r, const GSM_mesh_optimization::internal::Time_limit& limit)
+inline Lattice_request with_time_left(Lattice_request r, const VVM::internal::Time_limit& limit)
 {
-  r.options.time_limit = limit.remaining();
+  r.options.maximum_running_time = limit.remaining();
   return r;
+}
+
+/// `run(field, request)` with the frame field of `np` (`frame_field`), or, without one, with
+/// the domain's cross field, made within the time limit of `r` (the rest left to `run`)
+template <class MeshDomain, class NamedParameters, class Run>
+decltype(auto) with_frame_field(const MeshDomain& domain, const Lattice_request& r, const NamedParameters& np,
+                                const Run& run)
+{
+  const auto& given = CGAL::parameters::get_parameter_reference(np, VVM::internal_np::frame_field);
+  if constexpr(!std::is_same<std::decay_t<decltype(given)>, CGAL::internal_np::Param_not_found>::value)
+    return run(given, r);
+  else {
+    const VVM::internal::Time_limit time_limit(r.options.maximum_running_time);
+    const auto field = default_frame_field(domain, r);
+    return run(field, with_time_left(r, time_limit));
+  }
 }
 
 } // namespace internal
@@ -423,7 +436,8 @@ lattice_particles_3(const MeshDomain& domain, const FrameField& field,
 /*!
  * \ingroup PkgTetrahedralLatticeMeshingRef
  *
- * the same with the boundary-aligned cross field of `Frame_fields::generate_cross_field_3()`
+ * the same with the frame field of the named parameter `Tetrahedral_lattice_meshing::parameters::frame_field`
+ * or, without it, the boundary-aligned cross field of `Frame_fields::generate_cross_field_3()`
  * (unit frames, one axis on the surface normal and along the feature curves), computed on a
  * `make_mesh_3()` mesh of `domain` whose edges are about \f$ l^* \f$ long.
  */
@@ -432,10 +446,10 @@ Tetrahedral_lattice_meshing::Lattice_particles_3<typename MeshDomain::R::Point_3
 lattice_particles_3(const MeshDomain& domain, const Named_function_parameters<T, Tag, Base>& np)
 {
   namespace TLM_internal = Tetrahedral_lattice_meshing::internal;
-  const TLM_internal::Lattice_request r = TLM_internal::read_lattice_request(np);
-  const GSM_mesh_optimization::internal::Time_limit time_limit(r.options.time_limit);
-  const auto field = TLM_internal::default_frame_field(domain, r);
-  return TLM_internal::lattice_particles(domain, field, TLM_internal::with_time_left(r, time_limit)).particles;
+  return TLM_internal::with_frame_field(domain, TLM_internal::read_lattice_request(np), np,
+                                        [&](const auto& field, const TLM_internal::Lattice_request& r) {
+                                          return TLM_internal::lattice_particles(domain, field, r).particles;
+                                        });
 }
 
 /// \ingroup PkgTetrahedralLatticeMeshingRef

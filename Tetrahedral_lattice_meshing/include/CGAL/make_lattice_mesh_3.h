@@ -10,8 +10,7 @@
 #include <CGAL/lattice_particles_3.h>
 #include <CGAL/gsm_optimize_mesh_3.h>
 #include <CGAL/Tetrahedral_lattice_meshing/alignment_error.h>
-#include <CGAL/Tetrahedral_lattice_meshing/internal/Metric_Delaunay_flips.h>
-#include <CGAL/Tetrahedral_lattice_meshing/internal/Particle_complex.h>
+#include <CGAL/VVM/internal/Lattice_tetrahedralization.h>
 
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/Real_timer.h>
@@ -101,7 +100,7 @@ public:
 
   double operator()(const Vertex_handle& v, const Eigen::Vector3d& x)
   {
-    using GSM_mesh_optimization::internal::to_eigen;
+    using VVM::internal::to_eigen;
     if(v != vertex_) {
       vertex_ = v;
       neighbors_.clear();
@@ -158,7 +157,7 @@ Mesh_optimization_return_code optimize_lattice_mesh(C3T3& c3t3, const MeshDomain
   // std::ref: the named parameter is copied, the cost keeps the last vertex's neighbours
   Vertex_alignment_cost<C3T3, FrameField> alignment_cost(c3t3, field, lattice);
   auto gsm_np = GSM::parameters::vertex_move_cost(std::ref(alignment_cost),
-      GSM::parameters::mean_angle_moves(mean_angle_threshold,
+      GSM::parameters::mean_angle_threshold(mean_angle_threshold,
       GSM::parameters::shortest_polishing_moves(true, GSM::parameters::sliver_bound(sliver_bound,
       GSM::parameters::smooth_vertices(stage == Lattice_mesh_optimization::GSM,
       GSM::parameters::number_of_threads(threads, CGAL::parameters::maximum_running_time(time_limit)))))));
@@ -175,35 +174,6 @@ Mesh_optimization_return_code optimize_lattice_mesh(C3T3& c3t3, const MeshDomain
   return code;
 }
 
-/// the time the particles' connection into tets (and its metric flips) takes per particle, on
-/// one core, rounded up from `benchmark/time_limits`: under a time limit, the particle rounds
-/// keep it for the connection, which always runs
-constexpr double connection_seconds_per_particle = 1e-4;
-
-/// the particles connected into `c3t3` (`connect_particles()`); free particles the complex
-/// leaves on its boundary (under a hole of the boundary layer, 0.3 to 0.5 l* deep) would make
-/// tents off the surface: they go onto the surface and the particles are connected again
-template <class C3T3, class MeshDomain>
-Complex_report connect_lattice_particles(C3T3& c3t3, const MeshDomain& domain, Particles_in_domain<MeshDomain>& pd,
-                                         std::size_t& number_of_projected_particles,
-                                         const Eigen::Matrix3d& delaunay_map = Eigen::Matrix3d::Identity(),
-                                         const Frame_inverse_function& frame_inverse = Frame_inverse_function())
-{
-  Complex_report cr = connect_particles(c3t3, domain, *pd.boundary, pd.particles, delaunay_map, frame_inverse);
-  for(int pass = 0; pass < 3 && !cr.exposed_free_particles.empty(); ++pass) {
-    for(std::size_t i : cr.exposed_free_particles) {
-      auto& p = pd.particles.points[i];
-      const auto c = pd.boundary->closest_on_surface(Eigen::Vector3d(p.x(), p.y(), p.z()));
-      p = std::decay_t<decltype(p)>(c.point[0], c.point[1], c.point[2]);
-      pd.particles.kinds[i] = Particle_kind::BOUNDARY;
-      pd.particles.features[i] = c.feature;
-    }
-    number_of_projected_particles += cr.exposed_free_particles.size();
-    cr = connect_particles(c3t3, domain, *pd.boundary, pd.particles, delaunay_map, frame_inverse);
-  }
-  return cr;
-}
-
 /// the polishing bound of the last stage (`GSM_mesh_optimization::parameters::sliver_bound`),
 /// checked before any work
 template <class NamedParameters>
@@ -217,7 +187,7 @@ double lattice_mesh_sliver_bound(const NamedParameters& np)
   return bound;
 }
 
-/// the threshold of the last stage's mean-angle moves (`GSM_mesh_optimization::parameters::mean_angle_moves`),
+/// the threshold of the last stage's mean-angle moves (`GSM_mesh_optimization::parameters::mean_angle_threshold`),
 /// checked before any work
 template <class NamedParameters>
 double lattice_mesh_mean_angle_threshold(const NamedParameters& np)
@@ -225,7 +195,7 @@ double lattice_mesh_mean_angle_threshold(const NamedParameters& np)
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
   const double threshold =
-      choose_parameter(get_parameter(np, GSM_mesh_optimization::internal_np::mean_angle_moves), lattice_mean_angle_threshold);
+      choose_parameter(get_parameter(np, GSM_mesh_optimization::internal_np::mean_angle_threshold), lattice_mean_angle_threshold);
   if(!(threshold >= 0))
     throw std::invalid_argument("make_lattice_mesh_3: the mean-angle threshold must not be negative");
   return threshold;
@@ -250,42 +220,17 @@ C3T3 make_lattice_mesh(const MeshDomain& domain, const FrameField& field, const 
   Lattice_mesh_report local;
   Lattice_mesh_report& r = report ? *report : local;
   r = Lattice_mesh_report();
-  const GSM_mesh_optimization::internal::Time_limit time_limit(request.options.time_limit);
+  const VVM::internal::Time_limit time_limit(request.options.maximum_running_time);
 
-  Lattice_request particle_request = request;
-  particle_request.seconds_kept_per_particle = connection_seconds_per_particle;
-  auto pd = lattice_particles(domain, field, particle_request);
-  r.number_of_particles = pd.particles.size();
-  r.edge_length = pd.particles.edge_length;
-  r.particle_time = pd.particles.time;
-  r.time_limit_reached = pd.particles.time_limit_reached;
-  r.stopped_by_visitor = pd.particles.stopped_by_visitor;
-
-  CGAL::Real_timer timer;
-  timer.start();
+  VVM::internal::Lattice_tetrahedralization_options options;
+  options.caller = "make_lattice_mesh_3";
   C3T3 c3t3;
-  // the lattice is regular in the field's space: its tets are Delaunay there, not in Euclidean
-  // space (where those of a stretched lattice are slivers in the field's metric)
-  bool isotropic = true;
-  const Eigen::Matrix3d delaunay_map = mean_metric_root(field, pd.particles.points, isotropic);
-  const Frame_inverse_function B = [&field](const Eigen::Vector3d& x) {
-    return Eigen::Matrix3d(field.B(typename FrameField::Point_3(x[0], x[1], x[2])));
-  };
-  const Complex_report cr = connect_lattice_particles(c3t3, domain, pd, r.number_of_projected_particles, delaunay_map, B);
-  if(c3t3.number_of_cells_in_complex() == 0)
-    throw std::invalid_argument("make_lattice_mesh_3: the particles make no cell inside the domain "
-                                "(edge length too large for it?)");
-  if(!isotropic && !time_limit.is_reached()) {
-    typedef Metric_Delaunay_flips<C3T3> Flips;
-    const std::size_t max_flips = 20 * c3t3.number_of_cells_in_complex();
-    Flips flips(c3t3, B, Flips::Flat_boundary_cells::FORBIDDEN);
-    r.number_of_metric_flips = flips.run(max_flips);
-    r.number_of_metric_flips += flips.break_ties_by_shape(max_flips);
-  }
-  r.number_of_feature_edges = cr.number_of_feature_edges;
-  r.number_of_surface_facets = cr.number_of_surface_facets;
-  r.connection_time = timer.time();
-  if(time_limit.is_reached()) r.time_limit_reached = true;
+  const VVM::internal::Lattice_tetrahedralization<MeshDomain> t = VVM::internal::lattice_tetrahedralization(
+      c3t3, domain, field, request, time_limit, options, [](const auto&) { return true; });
+  VVM::internal::copy_shared_fields(t.report, r);
+  r.connection_time = t.report.connection_time;
+  r.number_of_feature_edges = t.report.number_of_feature_edges;
+  r.number_of_surface_facets = t.report.number_of_surface_facets;
   if(r.time_limit_reached || r.stopped_by_visitor) return c3t3;
   if(optimize_lattice_mesh(c3t3, domain, field, request.lattice, stage, sliver_bound, request.threads,
                            time_limit.remaining(), r, mean_angle_threshold) == TIME_LIMIT_REACHED)
@@ -339,7 +284,7 @@ C3T3 make_lattice_mesh(const MeshDomain& domain, const FrameField& field, const 
  *     \cgalParamType{`double`, in [0, 70.5)}
  *     \cgalParamDefault{30}
  *   \cgalParamNEnd
- *   \cgalParamNBegin{GSM_mesh_optimization::parameters::mean_angle_moves}
+ *   \cgalParamNBegin{GSM_mesh_optimization::parameters::mean_angle_threshold}
  *     \cgalParamDescription{after the polishing, the vertices of the cells whose smallest angle is
  *       under this many degrees (in the field's metric) move to raise the sum of their star's
  *       smallest angles less the alignment error of their edges (see `gsm_optimize_mesh_3()`):
@@ -381,7 +326,8 @@ C3T3 make_lattice_mesh_3(const MeshDomain& domain, const FrameField& field,
 /*!
  * \ingroup PkgTetrahedralLatticeMeshingRef
  *
- * the same with the boundary-aligned cross field of `Frame_fields::generate_cross_field_3()`
+ * the same with the frame field of the named parameter `Tetrahedral_lattice_meshing::parameters::frame_field`
+ * or, without it, the boundary-aligned cross field of `Frame_fields::generate_cross_field_3()`
  * (unit frames, one axis on the surface normal and along the feature curves), computed on a
  * `make_mesh_3()` mesh of `domain` whose edges are about \f$ l^* \f$ long.
  */
@@ -392,9 +338,9 @@ C3T3 make_lattice_mesh_3(const MeshDomain& domain, const Named_function_paramete
   const TLM_internal::Lattice_request r = TLM_internal::read_lattice_request(np);
   TLM_internal::lattice_mesh_sliver_bound(np); // checked before the field is made
   TLM_internal::lattice_mesh_mean_angle_threshold(np);
-  const GSM_mesh_optimization::internal::Time_limit time_limit(r.options.time_limit);
-  const auto field = TLM_internal::default_frame_field(domain, r);
-  return TLM_internal::make_lattice_mesh<C3T3>(domain, field, TLM_internal::with_time_left(r, time_limit), np);
+  return TLM_internal::with_frame_field(domain, r, np, [&](const auto& field, const TLM_internal::Lattice_request& fr) {
+    return TLM_internal::make_lattice_mesh<C3T3>(domain, field, fr, np);
+  });
 }
 
 /// \ingroup PkgTetrahedralLatticeMeshingRef

@@ -13,7 +13,8 @@
 #ifndef CGAL_GSM_MESH_OPTIMIZATION_PARAMETERS_H
 #define CGAL_GSM_MESH_OPTIMIZATION_PARAMETERS_H
 
-#include <CGAL/GSM_mesh_optimization/internal/add_named_parameter.h>
+#include <CGAL/VVM/internal/add_named_parameter.h>
+#include <CGAL/VVM/parameters.h>
 
 #include <CGAL/Named_function_parameters.h>
 
@@ -26,13 +27,12 @@ enum freeze_boundary_t { freeze_boundary };
 enum sizing_field_t { sizing_field };
 enum metric_field_t { metric_field };
 enum convergence_threshold_t { convergence_threshold };
-enum number_of_threads_t { number_of_threads };
 enum split_edges_t { split_edges };
 enum smooth_vertices_t { smooth_vertices };
 enum sliver_bound_t { sliver_bound };
 enum uniform_sizing_t { uniform_sizing };
 enum shortest_polishing_moves_t { shortest_polishing_moves };
-enum mean_angle_moves_t { mean_angle_moves };
+enum mean_angle_threshold_t { mean_angle_threshold };
 enum vertex_move_cost_t { vertex_move_cost };
 enum boundary_distance_t { boundary_distance };
 
@@ -54,7 +54,7 @@ CGAL_VVM_ADD_NAMED_PARAMETER(metric_field)
 /// `double`: stop when a round lowers the mean energy by less than this fraction (default 1e-4)
 CGAL_VVM_ADD_NAMED_PARAMETER(convergence_threshold)
 /// `int`: the number of threads of the vertex sweeps (default 0: TBB's choice)
-CGAL_VVM_ADD_NAMED_PARAMETER(number_of_threads)
+using VVM::parameters::number_of_threads;
 /// `double`: the smallest dihedral angle, in degrees, that the final polishing seeks (default 30; 0: no polishing)
 CGAL_VVM_ADD_NAMED_PARAMETER(sliver_bound)
 /// `bool`: whether the final polishing may split interior edges, adding vertices (default `true`)
@@ -67,9 +67,15 @@ CGAL_VVM_ADD_NAMED_PARAMETER(uniform_sizing)
 CGAL_VVM_ADD_NAMED_PARAMETER(shortest_polishing_moves)
 /// `double`: after the polishing, vertices with a cell under this many degrees in their star move to
 /// raise the sum of their star's smallest angles (default 0: none)
-CGAL_VVM_ADD_NAMED_PARAMETER(mean_angle_moves)
+CGAL_VVM_ADD_NAMED_PARAMETER(mean_angle_threshold)
+/// the former name of `mean_angle_threshold`
+template <class... Args>
+[[deprecated("use mean_angle_threshold")]] auto mean_angle_moves(const Args&... args)
+{
+  return mean_angle_threshold(args...);
+}
 /// a callable `double(Vertex_handle, const Eigen::Vector3d&)`: what a vertex at a position costs, in
-/// degrees of its star's smallest angles, for `mean_angle_moves` (default: nothing)
+/// degrees of its star's smallest angles, for the moves of `mean_angle_threshold` (default: nothing)
 CGAL_VVM_ADD_NAMED_PARAMETER(vertex_move_cost)
 
 } // namespace parameters

@@ -9,6 +9,7 @@
 #define CGAL_GSM_MESH_OPTIMIZATION_TETRAHEDRON_QUALITY_H
 
 #include <CGAL/number_utils.h>
+#include <CGAL/VVM/internal/Eigen_conversion.h>
 
 #include <Eigen/Core>
 #include <Eigen/Geometry> // cross()
@@ -21,12 +22,7 @@ namespace CGAL {
 namespace GSM_mesh_optimization {
 namespace internal {
 
-/// a CGAL point (bare or weighted) as an Eigen vector of doubles
-template <class Point_3>
-Eigen::Vector3d to_eigen(const Point_3& p)
-{
-  return Eigen::Vector3d(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
-}
+using VVM::internal::to_eigen;
 
 } // namespace internal
 

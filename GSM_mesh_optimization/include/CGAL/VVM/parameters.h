@@ -2,8 +2,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // Named parameters shared by the three VVM packages that CGAL's central list
-// does not have: those of the local thickness of a surface and of the sizing
-// field made from it.
+// does not have: each is declared here once, and the packages' own
+// `parameters` namespaces re-export those they take, so that one pack serves
+// every entry point (`number_of_threads`, `frame_field`). Also those of the
+// local thickness of a surface and of the sizing field made from it.
 //
 //   namespace VVM = CGAL::VVM;
 //   CGAL::Thickness_sizing_field_3<K> size(thickness,
@@ -12,7 +14,7 @@
 #ifndef CGAL_VVM_PARAMETERS_H
 #define CGAL_VVM_PARAMETERS_H
 
-#include <CGAL/GSM_mesh_optimization/internal/add_named_parameter.h>
+#include <CGAL/VVM/internal/add_named_parameter.h>
 
 #include <CGAL/Named_function_parameters.h>
 
@@ -20,6 +22,8 @@ namespace CGAL {
 namespace VVM {
 namespace internal_np {
 
+enum number_of_threads_t { number_of_threads };
+enum frame_field_t { frame_field };
 enum cells_across_t { cells_across };
 enum minimum_size_t { minimum_size };
 enum maximum_size_t { maximum_size };
@@ -31,6 +35,12 @@ enum cone_angle_t { cone_angle };
 
 namespace parameters {
 
+/// `int`: the number of threads of the parallel loops (default 0: TBB's choice); the results do not
+/// depend on it
+CGAL_VVM_ADD_NAMED_PARAMETER(number_of_threads)
+/// a model of `FrameField_3`, or a `std::reference_wrapper` to one: the frame field that a lattice
+/// follows or in whose space cells are measured
+CGAL_VVM_ADD_NAMED_PARAMETER(frame_field)
 /// `double`: the number of cells a wall (or a gap) holds across its thickness
 CGAL_VVM_ADD_NAMED_PARAMETER(cells_across)
 /// `double`: the smallest size a sizing field gives

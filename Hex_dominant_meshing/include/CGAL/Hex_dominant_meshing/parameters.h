@@ -14,7 +14,8 @@
 #ifndef CGAL_HEX_DOMINANT_MESHING_PARAMETERS_H
 #define CGAL_HEX_DOMINANT_MESHING_PARAMETERS_H
 
-#include <CGAL/GSM_mesh_optimization/internal/add_named_parameter.h>
+#include <CGAL/VVM/internal/add_named_parameter.h>
+#include <CGAL/VVM/parameters.h>
 
 #include <CGAL/Named_function_parameters.h>
 
@@ -34,7 +35,6 @@ namespace internal_np {
 
 enum quality_bound_t { quality_bound };
 enum cell_types_t { cell_types };
-enum frame_field_t { frame_field };
 enum merge_report_t { merge_report };
 enum hex_dominant_report_t { hex_dominant_report };
 enum stage_visitor_t { stage_visitor };
@@ -49,8 +49,9 @@ namespace parameters {
 CGAL_VVM_ADD_NAMED_PARAMETER(quality_bound)
 /// `Cell_types`: which cells the tets merge into (default `ALL`)
 CGAL_VVM_ADD_NAMED_PARAMETER(cell_types)
-/// a `FrameField_3`: the qualities are measured in its space (default: the identity)
-CGAL_VVM_ADD_NAMED_PARAMETER(frame_field)
+/// a `FrameField_3`: the qualities are measured in its space (default: the identity); the
+/// field of the lattice in `make_hex_dominant_mesh_3()` (default: the domain's cross field)
+using VVM::parameters::frame_field;
 /// `Hex_dominant_merge_report*`: receives what `tets_to_hex_dominant()` did (default: none)
 CGAL_VVM_ADD_NAMED_PARAMETER(merge_report)
 /// `Hex_dominant_report*`: receives what `make_hex_dominant_mesh_3()` did (default: none)

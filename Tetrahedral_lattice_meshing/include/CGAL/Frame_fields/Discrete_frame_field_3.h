@@ -10,8 +10,8 @@
 #include <CGAL/Frame_fields/frame_inverse.h>
 #include <CGAL/Frame_fields/internal/Uniform_grid_3.h>
 
-#include <CGAL/GSM_mesh_optimization/tetrahedron_quality.h> // internal::to_eigen
 #include <CGAL/assertions.h>
+#include <CGAL/VVM/internal/Eigen_conversion.h>
 
 #include <Eigen/Core>
 #include <Eigen/LU>
@@ -87,7 +87,7 @@ public:
                                   (location_ == Frame_location::VERTICES ? " vertices" : " cells"));
     xyz_.reserve(points_.size());
     for(const Point_3& p : points_) {
-      xyz_.push_back(GSM_mesh_optimization::internal::to_eigen(p));
+      xyz_.push_back(VVM::internal::to_eigen(p));
       if(!xyz_.back().allFinite())
         throw std::invalid_argument(std::string(who) + "a vertex has a non-finite coordinate");
     }
@@ -122,7 +122,7 @@ public:
   std::size_t index_of(const Point_3& p) const
   {
     if(T_.empty()) throw std::invalid_argument("Discrete_frame_field_3: the field is empty");
-    const Eigen::Vector3d x = GSM_mesh_optimization::internal::to_eigen(p);
+    const Eigen::Vector3d x = VVM::internal::to_eigen(p);
     if(!x.allFinite()) {
       std::ostringstream os;
       os << "Discrete_frame_field_3: the query point (" << x.transpose() << ") is not finite";

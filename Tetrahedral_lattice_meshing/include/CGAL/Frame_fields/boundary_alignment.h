@@ -15,7 +15,7 @@
 #include <CGAL/Frame_fields/generate_cross_field_3.h>
 #include <CGAL/Frame_fields/internal/Boundary_vertex_normals.h>
 #include <CGAL/Frame_fields/internal/L4_spherical_harmonics.h>
-#include <CGAL/GSM_mesh_optimization/tetrahedron_quality.h> // internal::to_eigen
+#include <CGAL/VVM/internal/Eigen_conversion.h>
 
 #include <CGAL/number_type_config.h> // CGAL_PI
 
@@ -106,7 +106,7 @@ Boundary_alignment_statistics boundary_alignment_statistics(const Generated_cros
     R.colwise().normalize();
     c[v] = sh.frame(R);
   }
-  auto xyz = [&](std::size_t v) { return GSM_mesh_optimization::internal::to_eigen(points[v]); };
+  auto xyz = [&](std::size_t v) { return VVM::internal::to_eigen(points[v]); };
   Boundary_alignment_statistics s;
   const std::size_t n = g.boundary_facets.size();
   s.facet_errors.resize(n);

@@ -10,9 +10,9 @@
 #include <CGAL/Frame_fields/Discrete_frame_field_3.h>
 #include <CGAL/Frame_fields/Singular_curve.h>
 #include <CGAL/Frame_fields/internal/Cross_field_solver.h>
-#include <CGAL/GSM_mesh_optimization/internal/Stopping.h>
 #include <CGAL/Frame_fields/internal/Indexed_tetrahedral_mesh.h>
 #include <CGAL/Frame_fields/parameters.h>
+#include <CGAL/VVM/internal/Stopping.h>
 
 #include <CGAL/Mesh_complex_3_in_triangulation_3.h>
 #include <CGAL/Kernel_traits.h>
@@ -43,7 +43,7 @@ namespace Frame_fields {
 template <class GeomTraits>
 struct Generated_cross_field_3
 {
-  /// the frames: rotations times `edge_length`, with the mesh's points and cells
+  /// the frames: rotations times `axis_length`, with the mesh's points and cells
   Discrete_frame_field_3<GeomTraits> field;
   /// the facets the frames were aligned with (the boundary; in a complex, all its facets)
   std::vector<std::array<std::size_t, 3>> boundary_facets;
@@ -146,7 +146,7 @@ generate_cross_field(const Indexed_tetrahedral_mesh<Point_3>& mesh, const NamedP
  *     \cgalParamType{`double`, non-negative}
  *     \cgalParamDefault{0}
  *   \cgalParamNEnd
- *   \cgalParamNBegin{Frame_fields::parameters::edge_length}
+ *   \cgalParamNBegin{Frame_fields::parameters::axis_length}
  *     \cgalParamDescription{the length of the three axes of every frame}
  *     \cgalParamType{`double`}
  *     \cgalParamDefault{1}
@@ -215,7 +215,7 @@ generate_cross_field_3(const Mesh_complex_3_in_triangulation_3<Tr, CornerIndex, 
  *     \cgalParamType{`double`, non-negative}
  *     \cgalParamDefault{0}
  *   \cgalParamNEnd
- *   \cgalParamNBegin{Frame_fields::parameters::edge_length}
+ *   \cgalParamNBegin{Frame_fields::parameters::axis_length}
  *     \cgalParamDescription{the length of the three axes of every frame}
  *     \cgalParamType{`double`}
  *     \cgalParamDefault{1}
@@ -258,23 +258,23 @@ generate_cross_field(const Indexed_tetrahedral_mesh<Point_3>& mesh, const NamedP
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
   typedef typename Kernel_traits<Point_3>::Kernel K;
-  const GSM_mesh_optimization::internal::Time_limit time_limit(
+  const VVM::internal::Time_limit time_limit(
       choose_parameter(get_parameter(np, CGAL::internal_np::maximum_running_time), 0.));
   const int rounds = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), 100);
   const double tolerance = choose_parameter(get_parameter(np, internal_np::smoothing_tolerance), 1e-4);
   std::function<bool(int, double)> visitor;
   auto v = get_parameter(np, CGAL::internal_np::visitor);
   if constexpr(!std::is_same<decltype(v), CGAL::internal_np::Param_not_found>::value)
-    visitor = [v](int round, double energy) { return GSM_mesh_optimization::internal::visit(v, round, energy); };
-  const double edge_length = choose_parameter(get_parameter(np, internal_np::edge_length), 1.);
+    visitor = [v](int round, double energy) { return VVM::internal::visit(v, round, energy); };
+  const double axis_length = choose_parameter(get_parameter(np, internal_np::axis_length), 1.);
   const bool verbose = choose_parameter(get_parameter(np, CGAL::internal_np::verbose), false);
   if(rounds < 0) throw std::invalid_argument("generate_cross_field_3: number_of_iterations must be >= 0");
   if(!(choose_parameter(get_parameter(np, CGAL::internal_np::maximum_running_time), 0.) >= 0))
     throw std::invalid_argument("generate_cross_field_3: maximum_running_time must be non-negative (0: no limit)");
   if(!(tolerance >= 0) || !std::isfinite(tolerance))
     throw std::invalid_argument("generate_cross_field_3: smoothing_tolerance must be non-negative and finite");
-  if(!(edge_length > 0) || !std::isfinite(edge_length))
-    throw std::invalid_argument("generate_cross_field_3: edge_length must be positive and finite");
+  if(!(axis_length > 0) || !std::isfinite(axis_length))
+    throw std::invalid_argument("generate_cross_field_3: axis_length must be positive and finite");
   mesh.check("generate_cross_field_3");
   if(mesh.boundary_facets.empty())
     throw std::invalid_argument("generate_cross_field_3: the mesh has no boundary facet to align with");
@@ -294,7 +294,7 @@ generate_cross_field(const Indexed_tetrahedral_mesh<Point_3>& mesh, const NamedP
   }, [&time_limit]() { return time_limit.is_reached(); });
 
   std::vector<Eigen::Matrix3d> frames(s.vertex_frames.size());
-  for(std::size_t v = 0; v < frames.size(); ++v) frames[v] = edge_length * s.vertex_frames[v];
+  for(std::size_t v = 0; v < frames.size(); ++v) frames[v] = axis_length * s.vertex_frames[v];
   out.field = Discrete_frame_field_3<K>(mesh.points, mesh.cells, std::move(frames), Frame_location::VERTICES);
   out.boundary_facets = mesh.boundary_facets;
   out.feature_edges = mesh.feature_edges;

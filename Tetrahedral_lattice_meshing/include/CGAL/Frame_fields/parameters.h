@@ -12,7 +12,7 @@
 #ifndef CGAL_FRAME_FIELDS_PARAMETERS_H
 #define CGAL_FRAME_FIELDS_PARAMETERS_H
 
-#include <CGAL/GSM_mesh_optimization/internal/add_named_parameter.h>
+#include <CGAL/VVM/internal/add_named_parameter.h>
 
 #include <CGAL/Named_function_parameters.h>
 
@@ -20,7 +20,7 @@ namespace CGAL {
 namespace Frame_fields {
 namespace internal_np {
 
-enum edge_length_t { edge_length };
+enum axis_length_t { axis_length };
 enum features_angle_t { features_angle };
 enum smoothing_tolerance_t { smoothing_tolerance };
 
@@ -29,7 +29,13 @@ enum smoothing_tolerance_t { smoothing_tolerance };
 namespace parameters {
 
 /// `double`: the length of the three axes of every generated frame (default 1)
-CGAL_VVM_ADD_NAMED_PARAMETER(edge_length)
+CGAL_VVM_ADD_NAMED_PARAMETER(axis_length)
+/// the former name of `axis_length` (not the lattice's `Tetrahedral_lattice_meshing::parameters::edge_length`)
+template <class... Args>
+[[deprecated("use axis_length")]] auto edge_length(const Args&... args)
+{
+  return axis_length(args...);
+}
 /// `double`, degrees: on a `Triangulation_3`, the convex hull's edges whose two facet
 /// normals differ by more than this are sharp features (default 60; 0 for none)
 CGAL_VVM_ADD_NAMED_PARAMETER(features_angle)

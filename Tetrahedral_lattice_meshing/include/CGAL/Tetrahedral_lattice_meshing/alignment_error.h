@@ -10,7 +10,7 @@
 
 #include <CGAL/Tetrahedral_lattice_meshing/Lattice.h>
 
-#include <CGAL/GSM_mesh_optimization/tetrahedron_quality.h> // internal::to_eigen
+#include <CGAL/VVM/internal/Eigen_conversion.h>
 
 #include <Eigen/Core>
 
@@ -58,7 +58,7 @@ Alignment_statistics alignment_statistics(const C3T3& c3t3, const FrameField& fi
 {
   typedef typename C3T3::Triangulation::Vertex_handle Vertex_handle;
   typedef typename FrameField::Point_3 Point_3;
-  using GSM_mesh_optimization::internal::to_eigen;
+  using VVM::internal::to_eigen;
   const auto& tr = c3t3.triangulation();
   std::set<std::pair<Vertex_handle, Vertex_handle>> seen;
   Alignment_statistics s;
@@ -93,7 +93,7 @@ template <class C3T3, class FrameField>
 std::vector<double> cell_alignment_errors(const C3T3& c3t3, const FrameField& field, const Lattice& lattice)
 {
   typedef typename FrameField::Point_3 Point_3;
-  using GSM_mesh_optimization::internal::to_eigen;
+  using VVM::internal::to_eigen;
   const auto& tr = c3t3.triangulation();
   std::vector<double> errors;
   errors.reserve(c3t3.number_of_cells_in_complex());

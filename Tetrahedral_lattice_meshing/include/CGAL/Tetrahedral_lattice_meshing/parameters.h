@@ -13,7 +13,8 @@
 #ifndef CGAL_TETRAHEDRAL_LATTICE_MESHING_PARAMETERS_H
 #define CGAL_TETRAHEDRAL_LATTICE_MESHING_PARAMETERS_H
 
-#include <CGAL/GSM_mesh_optimization/internal/add_named_parameter.h>
+#include <CGAL/VVM/internal/add_named_parameter.h>
+#include <CGAL/VVM/parameters.h>
 
 #include <CGAL/Named_function_parameters.h>
 
@@ -27,7 +28,6 @@ enum number_of_particles_t { number_of_particles };
 enum kernel_width_t { kernel_width };
 enum neighbor_radius_t { neighbor_radius };
 enum multiresolution_levels_t { multiresolution_levels };
-enum number_of_threads_t { number_of_threads };
 enum mesh_optimization_t { mesh_optimization };
 enum mesh_report_t { mesh_report };
 
@@ -50,7 +50,10 @@ CGAL_VVM_ADD_NAMED_PARAMETER(neighbor_radius)
 /// `lattice_particles_3()`; cubic: 2 from 3,200 particles, 1 from 400)
 CGAL_VVM_ADD_NAMED_PARAMETER(multiresolution_levels)
 /// `int`: the number of threads (default 0: TBB's choice); the result does not depend on it
-CGAL_VVM_ADD_NAMED_PARAMETER(number_of_threads)
+using VVM::parameters::number_of_threads;
+/// a model of `FrameField_3` (or a `std::reference_wrapper` to one): the field the lattice follows, in
+/// the overloads without a positional field (default: the domain's boundary-aligned cross field)
+using VVM::parameters::frame_field;
 /// `Lattice_mesh_optimization`: how `make_lattice_mesh_3()` ends (default `FLIPS`)
 CGAL_VVM_ADD_NAMED_PARAMETER(mesh_optimization)
 /// `Lattice_mesh_report*`: receives what `make_lattice_mesh_3()` did (default: none)

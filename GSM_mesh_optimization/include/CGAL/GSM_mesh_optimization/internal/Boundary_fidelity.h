@@ -56,7 +56,7 @@
 #ifndef CGAL_GSM_MESH_OPTIMIZATION_INTERNAL_BOUNDARY_FIDELITY_H
 #define CGAL_GSM_MESH_OPTIMIZATION_INTERNAL_BOUNDARY_FIDELITY_H
 
-#include <CGAL/GSM_mesh_optimization/internal/Parallel_for.h>
+#include <CGAL/VVM/internal/Parallel_for.h>
 
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
@@ -79,6 +79,8 @@
 namespace CGAL {
 namespace GSM_mesh_optimization {
 namespace internal {
+
+using VVM::internal::parallel_for_each_index;
 
 template <class C3T3, class MeshDomain>
 class Boundary_fidelity

@@ -9,13 +9,13 @@
 #ifndef CGAL_GSM_MESH_OPTIMIZATION_INTERNAL_GSM_OPTIMIZER_H
 #define CGAL_GSM_MESH_OPTIMIZATION_INTERNAL_GSM_OPTIMIZER_H
 
-#include <CGAL/GSM_mesh_optimization/internal/Parallel_for.h>
 #include <CGAL/GSM_mesh_optimization/internal/Sliver_polisher.h>
 #include <CGAL/GSM_mesh_optimization/internal/Energy_guided_flips.h>
 #include <CGAL/GSM_mesh_optimization/internal/Mesh_energy.h>
-#include <CGAL/GSM_mesh_optimization/internal/Stopping.h>
 #include <CGAL/GSM_mesh_optimization/internal/Vertex_smoother.h>
 #include <CGAL/GSM_mesh_optimization/mesh_quality_statistics.h>
+#include <CGAL/VVM/internal/Parallel_for.h>
+#include <CGAL/VVM/internal/Stopping.h>
 
 #include <CGAL/Mesh_optimization_return_code.h>
 #include <CGAL/Real_timer.h>
@@ -62,17 +62,21 @@ struct Round_report
 
 namespace internal {
 
+using VVM::internal::Index_range;
+using VVM::internal::parallel_for_ranges;
+
+/// the named parameters of `gsm_optimize_mesh_3()`, each field named as its parameter
 struct GSM_options
 {
-  int max_rounds = 50;
-  double time_limit = 0; // seconds; 0: none
-  double convergence = 1e-4;
+  int number_of_iterations = 50;
+  double maximum_running_time = 0; // seconds; 0: none
+  double convergence_threshold = 1e-4;
   bool do_flip = true;
-  bool do_smooth = true;
+  bool smooth_vertices = true;
   double sliver_bound = 30; // degrees; 0: no polishing
-  bool do_split = true;
-  bool shortest_moves = false; // the polishing's max-min moves: the shortest step to the bound
-  double mean_angle_moves = 0;  // degrees: after the polishing, the stars with a cell under it raise their sum
+  bool split_edges = true;
+  bool shortest_polishing_moves = false; // the polishing's max-min moves: the shortest step to the bound
+  double mean_angle_threshold = 0;  // degrees: after the polishing, the stars with a cell under it raise their sum
   bool freeze_boundary = false;
   double boundary_distance = 0; // the least bound of the boundary-fidelity guard
   bool verbose = false;
@@ -124,11 +128,11 @@ public:
     // earlier round did is no progress either: the polishing lifts the worst ones anyway
     Worst_cells_progress progress(energy_, bound(), round_angle_gain, round_count_share, options_.sliver_bound > 0);
     int round = 1;
-    for(; round <= options_.max_rounds; ++round) {
+    for(; round <= options_.number_of_iterations; ++round) {
       Round_report report;
       report.round = round;
       const double smoothing_start = timer.time();
-      if(options_.do_smooth) report.number_of_moves = smoothing_pass(sum, timer);
+      if(options_.smooth_vertices) report.number_of_moves = smoothing_pass(sum, timer);
       const double flips_start = timer.time();
       if(options_.do_flip && !time_is_up(timer)) {
         // after the first pass, only where the last one changed cells
@@ -158,12 +162,12 @@ public:
       }
       // the mean energy can creep down for dozens of rounds while the worst cells stay as
       // they are or get worse (a graded or thin-walled mesh): those rounds buy nothing
-      if(decrease < options_.convergence || progress.stalled(summary.worst_and_count_under)) {
+      if(decrease < options_.convergence_threshold || progress.stalled(summary.worst_and_count_under)) {
         result = CONVERGENCE_REACHED;
         break;
       }
     }
-    if(options_.sliver_bound > 0) polish((std::min)(round, options_.max_rounds), flips, sum, count, timer);
+    if(options_.sliver_bound > 0) polish((std::min)(round, options_.number_of_iterations), flips, sum, count, timer);
     return time_is_up(timer) ? stop_code() : result;
   }
 
@@ -236,8 +240,8 @@ private:
     Sliver_polisher<C3T3, MeshDomain> polisher(c3t3_, energy_, smoother_, flips, splits, surface_splits, collapses,
                                                surface_collapses,
                                                options_.sliver_bound,
-                                               options_.do_split, options_.freeze_boundary,
-                                               options_.shortest_moves);
+                                               options_.split_edges, options_.freeze_boundary,
+                                               options_.shortest_polishing_moves);
     Worst_cells_progress progress(energy_, options_.sliver_bound, polishing_angle_gain, polishing_count_share);
     for(int pass = 0; pass < max_polishing_passes && !time_is_up(timer); ++pass) {
       const double start = timer.time();
@@ -254,13 +258,13 @@ private:
       if(progress.stalled(now)) break;
     }
     // then the mean-angle moves, if asked for (see `Sliver_polisher::raise_mean_pass()`)
-    for(int pass = 0; options_.mean_angle_moves > 0 && pass < max_mean_passes && !time_is_up(timer); ++pass) {
+    for(int pass = 0; options_.mean_angle_threshold > 0 && pass < max_mean_passes && !time_is_up(timer); ++pass) {
       const double start = timer.time();
       Round_report report;
       report.round = ++round;
       report.is_polishing = true;
       report.number_of_moves =
-          polisher.raise_mean_pass(options_.mean_angle_moves, [&]() { return time_is_up(timer); });
+          polisher.raise_mean_pass(options_.mean_angle_threshold, [&]() { return time_is_up(timer); });
       notify_polishing(report, start, sum, count, timer);
       if(report.number_of_moves == 0) break;
     }
@@ -302,7 +306,7 @@ private:
   // the time limit is reached or the visitor asked to stop
   bool time_is_up(const CGAL::Real_timer& timer) const
   {
-    return stop_requested_ || (options_.time_limit > 0 && timer.time() >= options_.time_limit);
+    return stop_requested_ || (options_.maximum_running_time > 0 && timer.time() >= options_.maximum_running_time);
   }
 
   // a visitor's stop is a round limit of the caller's

@@ -8,11 +8,11 @@
 #ifndef CGAL_GSM_MESH_OPTIMIZATION_INTERNAL_MESH_ENERGY_H
 #define CGAL_GSM_MESH_OPTIMIZATION_INTERNAL_MESH_ENERGY_H
 
-#include <CGAL/GSM_mesh_optimization/internal/Parallel_for.h>
 #include <CGAL/GSM_mesh_optimization/internal/Vertex_sizes.h>
 #include <CGAL/GSM_mesh_optimization/internal/Metric_field.h>
 #include <CGAL/GSM_mesh_optimization/shape_matching_energy.h>
 #include <CGAL/GSM_mesh_optimization/tetrahedron_quality.h>
+#include <CGAL/VVM/internal/Parallel_for.h>
 
 #include <CGAL/number_utils.h>
 
@@ -29,6 +29,9 @@
 namespace CGAL {
 namespace GSM_mesh_optimization {
 namespace internal {
+
+using VVM::internal::Index_range;
+using VVM::internal::parallel_for_ranges;
 
 /// moves the vertex `v` of `tr` to `p`; if the points are weighted, keeps its
 /// weight, or gives it weight 0 if it is new

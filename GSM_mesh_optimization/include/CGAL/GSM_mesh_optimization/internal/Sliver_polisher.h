@@ -53,7 +53,7 @@
 //   vertex count in all), and the budget grows by as many: on thin organic
 //   models the splits need ~5% more vertices, which the interior, far from the
 //   thin parts, gives back;
-// - on request (`mean_angle_moves`, set by make_lattice_mesh_3), after those
+// - on request (`mean_angle_threshold`, set by make_lattice_mesh_3), after those
 //   passes, a vertex with a cell under a threshold in its star moves up the
 //   gradient of the sum of its star's smallest angles less a cost of its
 //   position (`vertex_move_cost`: a lattice mesh's alignment error), when that

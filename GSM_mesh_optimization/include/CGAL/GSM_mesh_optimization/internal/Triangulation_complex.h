@@ -11,6 +11,8 @@
 #ifndef CGAL_GSM_MESH_OPTIMIZATION_INTERNAL_TRIANGULATION_COMPLEX_H
 #define CGAL_GSM_MESH_OPTIMIZATION_INTERNAL_TRIANGULATION_COMPLEX_H
 
+#include <CGAL/VVM/internal/Complex_cell_replacement.h>
+
 #include <type_traits>
 #include <unordered_set>
 #include <vector>
@@ -95,6 +97,15 @@ struct Is_triangulation_complex<Triangulation_complex<Tr>> : std::true_type {};
 
 } // namespace internal
 } // namespace GSM_mesh_optimization
+
+namespace VVM {
+namespace internal {
+
+template <class Tr>
+struct Has_facet_surface_data<GSM_mesh_optimization::internal::Triangulation_complex<Tr>> : std::false_type {};
+
+} // namespace internal
+} // namespace VVM
 } // namespace CGAL
 
 #endif // CGAL_GSM_MESH_OPTIMIZATION_INTERNAL_TRIANGULATION_COMPLEX_H

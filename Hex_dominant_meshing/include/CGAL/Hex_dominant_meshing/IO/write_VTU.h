@@ -9,7 +9,7 @@
 #define CGAL_HEX_DOMINANT_MESHING_IO_WRITE_VTU_H
 
 #include <CGAL/Hex_dominant_mesh_3.h>
-#include <CGAL/Frame_fields/IO/write_VTU.h> // internal::write_VTU_head
+#include <CGAL/VVM/internal/VTU_head.h>
 
 #include <CGAL/assertions.h>
 
@@ -88,7 +88,7 @@ void write_VTU(std::ostream& os, const Hex_dominant_mesh_3<Point_3>& mesh,
   internal::check_cell_fields(mesh, cell_fields);
   boost::io::ios_precision_saver saved_precision(os);
   os.precision(17);
-  CGAL::Frame_fields::IO::internal::write_VTU_head(os, mesh.points, mesh.number_of_cells());
+  CGAL::VVM::internal::write_VTU_head(os, mesh.points, mesh.number_of_cells());
   for(const auto& c : mesh.cells) {
     for(std::size_t i = 0; i < c.size(); ++i) {
       CGAL_precondition(c.vertices[i] < mesh.number_of_points());

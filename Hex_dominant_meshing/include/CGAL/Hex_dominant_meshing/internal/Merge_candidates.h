@@ -14,10 +14,10 @@
 #ifndef CGAL_HEX_DOMINANT_MESHING_INTERNAL_MERGE_CANDIDATES_H
 #define CGAL_HEX_DOMINANT_MESHING_INTERNAL_MERGE_CANDIDATES_H
 
-#include <CGAL/GSM_mesh_optimization/internal/Parallel_for.h>
 #include <CGAL/Hex_dominant_mesh_3.h>
 #include <CGAL/Hex_dominant_meshing/cell_quality.h>
 #include <CGAL/Hex_dominant_meshing/internal/Tetrahedral_adjacency.h>
+#include <CGAL/VVM/internal/Parallel_for.h>
 
 
 #include <Eigen/Core>
@@ -34,8 +34,8 @@ namespace CGAL {
 namespace Hex_dominant_meshing {
 namespace internal {
 
-using GSM_mesh_optimization::internal::Index_range;
-using GSM_mesh_optimization::internal::parallel_for_ranges;
+using VVM::internal::Index_range;
+using VVM::internal::parallel_for_ranges;
 
 /// the most tets a cell is made of (a hexahedron of 7)
 constexpr int max_tets_in_cell = 7;

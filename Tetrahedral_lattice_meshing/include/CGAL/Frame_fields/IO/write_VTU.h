@@ -9,6 +9,7 @@
 
 #include <CGAL/Frame_fields/Discrete_frame_field_3.h>
 #include <CGAL/Frame_fields/Singular_curve.h>
+#include <CGAL/VVM/internal/VTU_head.h>
 
 #include <CGAL/number_utils.h>
 
@@ -23,19 +24,6 @@ namespace CGAL {
 namespace Frame_fields {
 namespace IO {
 namespace internal {
-
-// the XML header, the points and the opening of the connectivity array of a VTU file
-template <class Point_3>
-void write_VTU_head(std::ostream& os, const std::vector<Point_3>& points, std::size_t number_of_cells)
-{
-  os << "<?xml version=\"1.0\"?>\n"
-     << "<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
-     << "<UnstructuredGrid>\n<Piece NumberOfPoints=\"" << points.size() << "\" NumberOfCells=\""
-     << number_of_cells << "\">\n<Points>\n<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n";
-  for(const auto& p : points)
-    os << CGAL::to_double(p.x()) << " " << CGAL::to_double(p.y()) << " " << CGAL::to_double(p.z()) << "\n";
-  os << "</DataArray>\n</Points>\n<Cells>\n<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
-}
 
 // the end of the connectivity, the offsets (cells of `size` vertices) and the types
 inline void write_VTU_cell_types(std::ostream& os, std::size_t number_of_cells, std::size_t size, int vtk_type)
@@ -68,7 +56,7 @@ void write_VTU(std::ostream& os, const Discrete_frame_field_3<GeomTraits>& field
   const std::size_t n_cells = have_cells ? cells.size() : points.size();
   boost::io::ios_precision_saver saved_precision(os);
   os.precision(17);
-  internal::write_VTU_head(os, points, n_cells);
+  VVM::internal::write_VTU_head(os, points, n_cells);
   if(have_cells)
     for(const auto& c : cells) os << c[0] << " " << c[1] << " " << c[2] << " " << c[3] << "\n";
   else
@@ -100,7 +88,7 @@ void write_edges_VTU(std::ostream& os, const std::vector<Point_3>& points, const
 {
   boost::io::ios_precision_saver saved_precision(os);
   os.precision(17);
-  internal::write_VTU_head(os, points, edges.size());
+  VVM::internal::write_VTU_head(os, points, edges.size());
   for(const auto& e : edges) os << e[0] << " " << e[1] << "\n";
   internal::write_VTU_cell_types(os, edges.size(), 2, 3); // VTK_LINE
   os << "</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
@@ -121,7 +109,7 @@ void write_polylines_VTU(std::ostream& os, const std::vector<Point_3>& points,
 {
   boost::io::ios_precision_saver saved_precision(os);
   os.precision(17);
-  internal::write_VTU_head(os, points, curves.size());
+  VVM::internal::write_VTU_head(os, points, curves.size());
   for(const Singular_curve& c : curves) {
     for(std::size_t v : c.vertices) os << v << " ";
     os << "\n";

@@ -17,8 +17,8 @@
 #ifndef CGAL_FRAME_FIELDS_INTERNAL_CROSS_FIELD_SMOOTHER_H
 #define CGAL_FRAME_FIELDS_INTERNAL_CROSS_FIELD_SMOOTHER_H
 
-#include <CGAL/GSM_mesh_optimization/internal/Parallel_for.h>
 #include <CGAL/Frame_fields/internal/L4_spherical_harmonics.h>
+#include <CGAL/VVM/internal/Parallel_for.h>
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
@@ -38,7 +38,7 @@ namespace CGAL {
 namespace Frame_fields {
 namespace internal {
 
-using GSM_mesh_optimization::internal::parallel_for_each_index;
+using VVM::internal::parallel_for_each_index;
 
 /// the left Jacobian of SO(3): exp([w + d]) = exp([J_l(w) d]) exp([w]) to first order in d
 inline Eigen::Matrix3d so3_left_jacobian(const Eigen::Vector3d& w)

@@ -10,7 +10,8 @@
 #ifndef CGAL_FRAME_FIELDS_INTERNAL_INDEXED_TETRAHEDRAL_MESH_H
 #define CGAL_FRAME_FIELDS_INTERNAL_INDEXED_TETRAHEDRAL_MESH_H
 
-#include <CGAL/GSM_mesh_optimization/tetrahedron_quality.h> // internal::to_eigen
+#include <CGAL/VVM/internal/Eigen_conversion.h>
+#include <CGAL/VVM/internal/Vertex_numbering.h>
 
 #include <CGAL/Mesh_complex_3_in_triangulation_3.h>
 #include <CGAL/number_type_config.h> // CGAL_PI
@@ -51,31 +52,28 @@ struct Indexed_tetrahedral_mesh
   }
 };
 
-// numbers the vertices of a triangulation as they are met
+// numbers the vertices of a triangulation as they are met, adding them to the mesh
 template <class Tr, class Mesh>
-class Vertex_numbering
+class Mesh_vertex_numbering
 {
 public:
-  Vertex_numbering(const Tr& tr, Mesh& mesh) : tr_(tr), mesh_(mesh) {}
+  Mesh_vertex_numbering(const Tr& tr, Mesh& mesh) : number_(tr), mesh_(mesh) {}
 
   std::size_t operator()(typename Tr::Vertex_handle v)
   {
-    auto it = index_.find(v);
-    if(it != index_.end()) return it->second;
-    const auto p = tr_.geom_traits().construct_point_3_object()(tr_.point(v));
-    mesh_.points.push_back(p);
-    mesh_.xyz.push_back(GSM_mesh_optimization::internal::to_eigen(p));
-    return index_[v] = mesh_.points.size() - 1;
+    return number_(v, [this](const auto& p) {
+      mesh_.points.push_back(p);
+      mesh_.xyz.push_back(VVM::internal::to_eigen(p));
+    });
   }
 
 private:
-  const Tr& tr_;
+  VVM::internal::Vertex_numbering<Tr> number_;
   Mesh& mesh_;
-  std::unordered_map<typename Tr::Vertex_handle, std::size_t> index_;
 };
 
 template <class Tr, class Mesh>
-std::array<std::size_t, 3> facet_indices(const typename Tr::Facet& f, Vertex_numbering<Tr, Mesh>& number)
+std::array<std::size_t, 3> facet_indices(const typename Tr::Facet& f, Mesh_vertex_numbering<Tr, Mesh>& number)
 {
   std::array<std::size_t, 3> t;
   for(int k = 0, j = 0; k < 4; ++k)
@@ -111,7 +109,7 @@ indexed_mesh(const Triangulation_3<GT, TDS, Lds>& tr, double features_angle_deg)
   typedef Indexed_tetrahedral_mesh<typename GT::Point_3> Mesh;
   Mesh mesh;
   if(tr.dimension() < 3) return mesh;
-  Vertex_numbering<Tr, Mesh> number(tr, mesh);
+  Mesh_vertex_numbering<Tr, Mesh> number(tr, mesh);
   std::vector<Eigen::Vector3d> normals;
   for(auto c : tr.finite_cell_handles()) {
     mesh.cells.push_back({{number(c->vertex(0)), number(c->vertex(1)), number(c->vertex(2)), number(c->vertex(3))}});
@@ -135,7 +133,7 @@ indexed_mesh(const Mesh_complex_3_in_triangulation_3<Tr, CornerIndex, CurveIndex
 {
   typedef Indexed_tetrahedral_mesh<typename Tr::Geom_traits::Point_3> Mesh;
   Mesh mesh;
-  Vertex_numbering<Tr, Mesh> number(c3t3.triangulation(), mesh);
+  Mesh_vertex_numbering<Tr, Mesh> number(c3t3.triangulation(), mesh);
   for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c)
     mesh.cells.push_back({{number(c->vertex(0)), number(c->vertex(1)), number(c->vertex(2)), number(c->vertex(3))}});
   for(auto f = c3t3.facets_in_complex_begin(); f != c3t3.facets_in_complex_end(); ++f)

@@ -31,7 +31,7 @@ template <class MeshDomain>
 Frame_fields::Discrete_frame_field_3<typename Kernel_traits<typename MeshDomain::R::Point_3>::Kernel>
 domain_cross_field(const MeshDomain& domain, double size, double time_limit = 0)
 {
-  const GSM_mesh_optimization::internal::Time_limit limit(time_limit);
+  const VVM::internal::Time_limit limit(time_limit);
   namespace P = CGAL::parameters;
   typedef typename Sampling_complex<MeshDomain>::type C3T3;
   typedef CGAL::Mesh_criteria_3<typename C3T3::Triangulation> Criteria;

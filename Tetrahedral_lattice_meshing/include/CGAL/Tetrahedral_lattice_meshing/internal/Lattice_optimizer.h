@@ -32,14 +32,15 @@ namespace CGAL {
 namespace Tetrahedral_lattice_meshing {
 namespace internal {
 
+/// the named parameters of `lattice_particles_3()`, each field named as its parameter
 struct Lattice_options
 {
-  double sigma = -1;      // kernel width in units of l*; < 0: the lattice's
-  double radius = -1;     // neighbour radius in units of l*; < 0: the lattice's
-  int levels = 0;         // multiresolution levels k: start at 2^k l*
-  int max_rounds = -1;    // MaxRoundNum; < 0: 16 at the first level, 8 after
-  double time_limit = 0;  // seconds, 0: none
-  unsigned seed = 0;
+  double kernel_width = -1;           // sigma in units of l*; < 0: the lattice's
+  double neighbor_radius = -1;        // in units of l*; < 0: the lattice's
+  int multiresolution_levels = 0;     // k: start at 2^k l*
+  int number_of_iterations = -1;      // MaxRoundNum; < 0: 16 at the first level, 8 after
+  double maximum_running_time = 0;    // seconds, 0: none
+  unsigned random_seed = 0;
   bool verbose = false;
   std::function<bool(const Lattice_round_report&)> visitor; // false: stop
 };
@@ -154,13 +155,13 @@ public:
   double optimize()
   {
     timer_.start();
-    const double sigma = o_.sigma > 0 ? o_.sigma : lattice_.sigma;
-    const double radius = o_.radius > 0 ? o_.radius : lattice_.neighbor_radius;
-    double l = l_ * std::pow(2., o_.levels);
+    const double sigma = o_.kernel_width > 0 ? o_.kernel_width : lattice_.sigma;
+    const double radius = o_.neighbor_radius > 0 ? o_.neighbor_radius : lattice_.neighbor_radius;
+    double l = l_ * std::pow(2., o_.multiresolution_levels);
     system_ = std::make_unique<System>(lattice_, field_, &boundary_, l, sigma, radius);
     random_start(*system_);
-    for(int level = o_.levels; level >= 0; --level) {
-      if(level < o_.levels) { // refine: the sites of the lattice of half the edge length
+    for(int level = o_.multiresolution_levels; level >= 0; --level) {
+      if(level < o_.multiresolution_levels) { // refine: the sites of the lattice of half the edge length
         auto finer = std::make_unique<System>(lattice_, field_, &boundary_, l / 2, sigma, radius);
         finer->points = system_->points;
         finer->kinds = system_->kinds;
@@ -172,7 +173,7 @@ public:
         system_ = std::move(finer);
         l /= 2;
       }
-      const int max_rounds = o_.max_rounds >= 0 ? o_.max_rounds : (level == o_.levels ? 16 : 8);
+      const int max_rounds = o_.number_of_iterations >= 0 ? o_.number_of_iterations : (level == o_.multiresolution_levels ? 16 : 8);
       out_.number_of_rounds += optimize_level(*system_, level, max_rounds, level > 0);
       if(must_stop()) {
         record_stop();
@@ -217,7 +218,7 @@ public:
   }
 
 private:
-  bool must_stop() const { return stop_requested_ || (o_.time_limit > 0 && timer_.time() > o_.time_limit); }
+  bool must_stop() const { return stop_requested_ || (o_.maximum_running_time > 0 && timer_.time() > o_.maximum_running_time); }
   void record_stop()
   {
     if(stop_requested_) out_.stopped_by_visitor = true;
@@ -243,7 +244,7 @@ private:
     const std::size_t n = std::size_t(std::llround(volume * lattice_.particles_per_cube / (l * l * l)));
     for(std::size_t k = 0; k < boundary_.corners().size(); ++k)
       s.add(boundary_.corners()[k], Particle_kind::CORNER, boundary_.corner_numbers()[k]);
-    CGAL::Random random(o_.seed);
+    CGAL::Random random(o_.random_seed);
     for(std::size_t k = 0; k < n && volume > 0; ++k) {
       const double t = random.get_double(0, volume);
       const std::size_t c = std::min(std::size_t(std::upper_bound(w.begin(), w.end(), t) - w.begin()), cells.size() - 1);

@@ -26,7 +26,7 @@
 #ifndef CGAL_TETRAHEDRAL_LATTICE_MESHING_INTERNAL_METRIC_DELAUNAY_FLIPS_H
 #define CGAL_TETRAHEDRAL_LATTICE_MESHING_INTERNAL_METRIC_DELAUNAY_FLIPS_H
 
-#include <CGAL/GSM_mesh_optimization/internal/Cell_replacement.h>
+#include <CGAL/VVM/internal/Complex_cell_replacement.h>
 
 #include <Eigen/LU>
 
@@ -40,9 +40,9 @@ namespace Tetrahedral_lattice_meshing {
 namespace internal {
 
 template <class C3T3>
-class Metric_Delaunay_flips : public GSM_mesh_optimization::internal::Complex_cell_replacement<C3T3>
+class Metric_Delaunay_flips : public VVM::internal::Complex_cell_replacement<C3T3>
 {
-  typedef GSM_mesh_optimization::internal::Complex_cell_replacement<C3T3> Base;
+  typedef VVM::internal::Complex_cell_replacement<C3T3> Base;
 
 public:
   typedef typename Base::Vertex_handle Vertex_handle;

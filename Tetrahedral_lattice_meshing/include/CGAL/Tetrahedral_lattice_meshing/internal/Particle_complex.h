@@ -14,6 +14,7 @@
 #define CGAL_TETRAHEDRAL_LATTICE_MESHING_INTERNAL_PARTICLE_COMPLEX_H
 
 #include <CGAL/Tetrahedral_lattice_meshing/lattice_particle_types.h>
+#include <CGAL/VVM/internal/Eigen_conversion.h>
 
 #include <CGAL/Delaunay_triangulation_3.h>
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
@@ -55,7 +56,7 @@ struct Complex_report
 };
 
 /// the frame inverse \f$ B(x) \f$ of a frame field; empty for the identity
-typedef std::function<Eigen::Matrix3d(const Eigen::Vector3d&)> Frame_inverse_function;
+using VVM::internal::Frame_inverse_function;
 
 /// true if the tetrahedron's smallest height is under a tenth of its longest edge
 inline bool is_flat(const std::array<Eigen::Vector3d, 4>& p)

@@ -29,11 +29,11 @@
 #ifndef CGAL_TETRAHEDRAL_LATTICE_MESHING_INTERNAL_PARTICLE_SYSTEM_H
 #define CGAL_TETRAHEDRAL_LATTICE_MESHING_INTERNAL_PARTICLE_SYSTEM_H
 
-#include <CGAL/GSM_mesh_optimization/internal/Parallel_for.h>
 #include <CGAL/Tetrahedral_lattice_meshing/Lattice.h>
 #include <CGAL/Tetrahedral_lattice_meshing/gaussian_hole_kernel.h>
 #include <CGAL/Tetrahedral_lattice_meshing/internal/Neighbor_grid.h>
 #include <CGAL/Tetrahedral_lattice_meshing/lattice_particle_types.h>
+#include <CGAL/VVM/internal/Parallel_for.h>
 
 #include <Eigen/Core>
 #include <Eigen/Eigenvalues>
@@ -52,7 +52,7 @@ namespace CGAL {
 namespace Tetrahedral_lattice_meshing {
 namespace internal {
 
-using GSM_mesh_optimization::internal::parallel_for_each_index;
+using VVM::internal::parallel_for_each_index;
 
 /// a boundary that is not there: every particle is free (tests, unbounded lattices)
 struct No_boundary

@@ -4,8 +4,8 @@
 // The parallel loops of the three packages, in one place: TBB's parallel_for over index
 // ranges, or, in the ThreadSanitizer build, the same chunks on std::threads.
 
-#ifndef CGAL_GSM_MESH_OPTIMIZATION_INTERNAL_PARALLEL_FOR_H
-#define CGAL_GSM_MESH_OPTIMIZATION_INTERNAL_PARALLEL_FOR_H
+#ifndef CGAL_VVM_INTERNAL_PARALLEL_FOR_H
+#define CGAL_VVM_INTERNAL_PARALLEL_FOR_H
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -23,7 +23,7 @@
 #include <cstddef>
 
 namespace CGAL {
-namespace GSM_mesh_optimization {
+namespace VVM {
 namespace internal {
 
 typedef tbb::blocked_range<std::size_t> Index_range;
@@ -74,7 +74,7 @@ void parallel_for_each_index(std::size_t n, const F& f, std::size_t grain = 256)
 }
 
 } // namespace internal
-} // namespace GSM_mesh_optimization
+} // namespace VVM
 } // namespace CGAL
 
-#endif // CGAL_GSM_MESH_OPTIMIZATION_INTERNAL_PARALLEL_FOR_H
+#endif // CGAL_VVM_INTERNAL_PARALLEL_FOR_H

@@ -5,8 +5,8 @@
 // `maximum_running_time` counted from the call's start and shared by its
 // stages, and visitors that may ask to stop by returning `false`.
 
-#ifndef CGAL_GSM_MESH_OPTIMIZATION_INTERNAL_STOPPING_H
-#define CGAL_GSM_MESH_OPTIMIZATION_INTERNAL_STOPPING_H
+#ifndef CGAL_VVM_INTERNAL_STOPPING_H
+#define CGAL_VVM_INTERNAL_STOPPING_H
 
 #include <CGAL/Real_timer.h>
 
@@ -15,7 +15,7 @@
 #include <utility>
 
 namespace CGAL {
-namespace GSM_mesh_optimization {
+namespace VVM {
 namespace internal {
 
 /// the time limit of one call (`maximum_running_time`, 0: none), started at construction:
@@ -50,7 +50,7 @@ bool visit(const Visitor& visitor, Args&&... args)
 }
 
 } // namespace internal
-} // namespace GSM_mesh_optimization
+} // namespace VVM
 } // namespace CGAL
 
-#endif // CGAL_GSM_MESH_OPTIMIZATION_INTERNAL_STOPPING_H
+#endif // CGAL_VVM_INTERNAL_STOPPING_H

@@ -8,10 +8,10 @@
 // and the particles are connected again, until the distance is under the
 // threshold both ways or a few rounds are done.
 
-#ifndef CGAL_HEX_DOMINANT_MESHING_INTERNAL_BOUNDARY_REFINEMENT_H
-#define CGAL_HEX_DOMINANT_MESHING_INTERNAL_BOUNDARY_REFINEMENT_H
+#ifndef CGAL_TETRAHEDRAL_LATTICE_MESHING_INTERNAL_BOUNDARY_REFINEMENT_H
+#define CGAL_TETRAHEDRAL_LATTICE_MESHING_INTERNAL_BOUNDARY_REFINEMENT_H
 
-#include <CGAL/make_lattice_mesh_3.h>
+#include <CGAL/Tetrahedral_lattice_meshing/internal/Lattice_connection.h>
 
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
@@ -26,16 +26,16 @@
 #include <vector>
 
 namespace CGAL {
-namespace Hex_dominant_meshing {
+namespace Tetrahedral_lattice_meshing {
 namespace internal {
 
-/// adds surface points and connects the particles again (see above); returns the points added
+/// adds surface points and connects the particles again (see above), `cr` the last connection's
+/// report; returns the points added
 template <class C3T3, class MeshDomain>
-std::size_t refine_boundary(C3T3& c3t3, const MeshDomain& domain,
-                            Tetrahedral_lattice_meshing::internal::Particles_in_domain<MeshDomain>& pd,
+std::size_t refine_boundary(C3T3& c3t3, const MeshDomain& domain, Particles_in_domain<MeshDomain>& pd,
                             double threshold, const Eigen::Matrix3d& delaunay_map,
-                            const Tetrahedral_lattice_meshing::internal::Frame_inverse_function& frame_inverse,
-                            std::size_t& number_of_projected_particles, int max_rounds = 4)
+                            const Frame_inverse_function& frame_inverse, std::size_t& number_of_projected_particles,
+                            Complex_report& cr, int max_rounds = 4)
 {
   namespace TLM = Tetrahedral_lattice_meshing;
   typedef typename MeshDomain::R K;
@@ -121,13 +121,13 @@ std::size_t refine_boundary(C3T3& c3t3, const MeshDomain& domain,
         if(far(x)) add(x);
     if(added == 0) break;
     added_total += added;
-    TLM::internal::connect_lattice_particles(c3t3, domain, pd, number_of_projected_particles, delaunay_map, frame_inverse);
+    cr = connect_lattice_particles(c3t3, domain, pd, number_of_projected_particles, delaunay_map, frame_inverse);
   }
   return added_total;
 }
 
 } // namespace internal
-} // namespace Hex_dominant_meshing
+} // namespace Tetrahedral_lattice_meshing
 } // namespace CGAL
 
-#endif // CGAL_HEX_DOMINANT_MESHING_INTERNAL_BOUNDARY_REFINEMENT_H
+#endif // CGAL_TETRAHEDRAL_LATTICE_MESHING_INTERNAL_BOUNDARY_REFINEMENT_H

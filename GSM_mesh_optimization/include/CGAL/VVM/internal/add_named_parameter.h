@@ -8,8 +8,8 @@
 // `NAME(t, np)`, the latter appending the parameter to an existing pack.
 // Shared by every VVM package that has parameters of its own.
 
-#ifndef CGAL_GSM_MESH_OPTIMIZATION_INTERNAL_ADD_NAMED_PARAMETER_H
-#define CGAL_GSM_MESH_OPTIMIZATION_INTERNAL_ADD_NAMED_PARAMETER_H
+#ifndef CGAL_VVM_INTERNAL_ADD_NAMED_PARAMETER_H
+#define CGAL_VVM_INTERNAL_ADD_NAMED_PARAMETER_H
 
 #include <CGAL/Named_function_parameters.h>
 
@@ -28,4 +28,4 @@
                                            CGAL::Named_function_parameters<NP_T, NP_Tag, NP_Base>>(t, np); \
   }
 
-#endif // CGAL_GSM_MESH_OPTIMIZATION_INTERNAL_ADD_NAMED_PARAMETER_H
+#endif // CGAL_VVM_INTERNAL_ADD_NAMED_PARAMETER_H
