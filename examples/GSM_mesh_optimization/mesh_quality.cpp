@@ -71,7 +71,6 @@ int main(int argc, char** argv)
   GSM::IO::write_VTU_with_quality(vtu, c3t3);
   std::ofstream medit(output + ".mesh");
   CGAL::IO::output_to_medit(medit, c3t3, false, true);
-  std::cout << "wrote " << vvm_example::absolute(output) << "\n";
   std::cout << "wrote " << vvm_example::absolute(output + ".vtu") << " and " << vvm_example::absolute(output + ".mesh") << "\n";
   return (vtu && medit && q.number_of_inverted_cells == 0) ? 0 : 1;
 }

@@ -31,8 +31,6 @@
 #include <exception>
 #include <vector>
 
-#include "example_data.h"
-
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 typedef CGAL::Delaunay_triangulation_3<K> Delaunay;
 typedef CGAL::Labeled_mesh_domain_3<K> Implicit_domain;

@@ -673,6 +673,17 @@ void test_lattice_mesh_in_stretched_field()
   const auto named_particles = CGAL::lattice_particles_3(domain,
       TLM::parameters::frame_field(field, TLM::parameters::lattice(TLM::Lattice_type::FCC, TLM::parameters::edge_length(0.25))));
   VVM_CHECK_EQUAL(vvm_test::particles_hash(named_particles), vvm_test::particles_hash(particles));
+
+  // a visitor's stop after the first round still gets a lattice mesh, its tets made in the field's space
+  TLM::Lattice_mesh_report stopped;
+  const Cube_c3t3 first_round = CGAL::make_lattice_mesh_3<Cube_c3t3>(domain, field,
+      TLM::parameters::lattice(TLM::Lattice_type::FCC, TLM::parameters::edge_length(0.25,
+          TLM::parameters::mesh_report(&stopped,
+              CGAL::parameters::visitor([](const TLM::Lattice_round_report&) { return false; }).random_seed(3u)))));
+  std::cout << "stopped by the visitor: " << first_round.number_of_cells_in_complex() << " cells, "
+            << stopped.number_of_metric_flips << " metric flips\n";
+  VVM_CHECK(stopped.stopped_by_visitor && !stopped.time_limit_reached);
+  VVM_CHECK(first_round.number_of_cells_in_complex() > 100);
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -23,7 +23,6 @@
 #include <CGAL/Real_timer.h>
 #include <CGAL/Triangulation_3.h>
 
-
 #include <Eigen/Core>
 
 #include <cmath>
@@ -32,7 +31,6 @@
 #include <stdexcept>
 #include <string>
 #include <type_traits>
-#include <unordered_map>
 #include <vector>
 
 namespace CGAL {

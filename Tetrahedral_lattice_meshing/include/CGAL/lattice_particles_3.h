@@ -21,7 +21,6 @@
 
 #include <Eigen/Eigenvalues>
 
-
 #include <unistd.h>
 
 #include <cmath>

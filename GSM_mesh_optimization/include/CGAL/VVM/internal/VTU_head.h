@@ -17,7 +17,7 @@ namespace CGAL {
 namespace VVM {
 namespace internal {
 
-// the XML header, the points and the opening of the connectivity array of a VTU file
+/// the XML header, the points and the opening of the connectivity array of a VTU file
 template <class Point_3>
 void write_VTU_head(std::ostream& os, const std::vector<Point_3>& points, std::size_t number_of_cells)
 {

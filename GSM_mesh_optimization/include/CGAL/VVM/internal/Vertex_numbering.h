@@ -15,6 +15,7 @@ namespace CGAL {
 namespace VVM {
 namespace internal {
 
+/// the numbers of the vertices of a triangulation `Tr`, given as they are first met
 template <class Tr>
 class Vertex_numbering
 {

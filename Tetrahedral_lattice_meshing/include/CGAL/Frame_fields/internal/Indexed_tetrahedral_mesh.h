@@ -18,6 +18,7 @@
 #include <CGAL/Triangulation_3.h>
 
 #include <Eigen/Core>
+#include <Eigen/Geometry> // cross()
 
 #include <algorithm>
 #include <array>
@@ -26,7 +27,6 @@
 #include <map>
 #include <stdexcept>
 #include <string>
-#include <unordered_map>
 #include <vector>
 
 namespace CGAL {

@@ -21,8 +21,8 @@ namespace Tetrahedral_lattice_meshing {
 namespace internal {
 
 /// the particles connected into `c3t3` (`connect_particles()`); free particles the complex
-/// leaves on its boundary (under a hole of the boundary layer, 0.3 to 0.5 l* deep) would make
-/// tents off the surface: they go onto the surface and the particles are connected again
+/// leaves on its boundary (under a hole of the boundary layer) would make tents off the
+/// surface: they go onto the surface and the particles are connected again
 template <class C3T3, class MeshDomain>
 Complex_report connect_lattice_particles(C3T3& c3t3, const MeshDomain& domain, Particles_in_domain<MeshDomain>& pd,
                                          std::size_t& number_of_projected_particles,

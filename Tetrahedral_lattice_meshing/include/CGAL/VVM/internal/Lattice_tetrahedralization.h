@@ -31,8 +31,8 @@ namespace CGAL {
 namespace VVM {
 namespace internal {
 
-// the named parameters of `lattice_particles_3()`, read and checked, and the field of the
-// overloads without one
+/// the named parameters of `lattice_particles_3()`, read and checked, and the frame field of
+/// the overloads without a positional one
 using Tetrahedral_lattice_meshing::internal::Lattice_request;
 using Tetrahedral_lattice_meshing::internal::read_lattice_request;
 using Tetrahedral_lattice_meshing::internal::with_frame_field;
@@ -50,8 +50,10 @@ struct Lattice_tetrahedralization_options
   /// the boundary refinement's distance (`refine_boundary()`); 0: none
   double boundary_distance = 0;
   /// tetrahedral lattices: no flip lays a flat cell of four surface vertices on a planar face,
-  /// and cospherical points in the field's space are connected by the better-shaped tets
-  /// (`Metric_Delaunay_flips`); the cubic lattice's tets are merged instead, whatever their shape
+  /// cospherical points in the field's space are connected by the better-shaped tets
+  /// (`Metric_Delaunay_flips`), and the flips run unless the time limit is reached (a visitor's
+  /// stop still gets a lattice mesh). The cubic lattice's tets are merged instead, whatever their
+  /// shape, and a visitor's stop skips their flips.
   bool for_tetrahedral_lattice = true;
 };
 
@@ -65,10 +67,10 @@ struct Lattice_tetrahedralization_report
   std::size_t number_of_projected_particles = 0; ///< free particles the complex left on its boundary, put onto it
   std::size_t number_of_boundary_points = 0;     ///< surface points added by the boundary refinement
   std::size_t number_of_metric_flips = 0;        ///< flips that made the tets Delaunay in the field's space
-  std::size_t number_of_feature_edges = 0;
-  std::size_t number_of_surface_facets = 0;
-  bool time_limit_reached = false;
-  bool stopped_by_visitor = false;
+  std::size_t number_of_feature_edges = 0;      ///< edges of the complex on the domain's feature curves
+  std::size_t number_of_surface_facets = 0;     ///< facets of the complex on the domain's surface
+  bool time_limit_reached = false;              ///< a stage stopped or did not start at the time limit
+  bool stopped_by_visitor = false;              ///< a visitor asked to stop
 };
 
 /// the fields of `t` that a package's own report has under the same names
@@ -116,9 +118,11 @@ lattice_tetrahedralization(C3T3& c3t3, const MeshDomain& domain, const FrameFiel
   r.time_limit_reached = pd.particles.time_limit_reached;
   r.stopped_by_visitor = pd.particles.stopped_by_visitor;
   if(!particles_done(r)) r.stopped_by_visitor = true;
+  // the stages a valid mesh does not need do not start after a visitor's stop or the time limit
   auto skip_stage = [&]() {
+    if(r.stopped_by_visitor) return true;
     if(time_limit.is_reached()) r.time_limit_reached = true;
-    return r.stopped_by_visitor || r.time_limit_reached;
+    return r.time_limit_reached;
   };
 
   CGAL::Real_timer timer;
@@ -136,7 +140,7 @@ lattice_tetrahedralization(C3T3& c3t3, const MeshDomain& domain, const FrameFiel
   if(c3t3.number_of_cells_in_complex() == 0)
     throw std::invalid_argument(options.caller + ": the particles make no cell inside the domain "
                                 "(edge length too large for it?)");
-  if(!isotropic && !skip_stage()) {
+  if(!isotropic && (options.for_tetrahedral_lattice ? !time_limit.is_reached() : !skip_stage())) {
     typedef TLM_internal::Metric_Delaunay_flips<C3T3> Flips;
     const std::size_t max_flips = 20 * c3t3.number_of_cells_in_complex();
     Flips flips(c3t3, B, options.for_tetrahedral_lattice ? Flips::Flat_boundary_cells::FORBIDDEN
@@ -147,7 +151,7 @@ lattice_tetrahedralization(C3T3& c3t3, const MeshDomain& domain, const FrameFiel
   r.number_of_feature_edges = cr.number_of_feature_edges;
   r.number_of_surface_facets = cr.number_of_surface_facets;
   r.connection_time = timer.time();
-  skip_stage();
+  if(options.for_tetrahedral_lattice && time_limit.is_reached()) r.time_limit_reached = true;
   return out;
 }
 
