@@ -97,9 +97,10 @@ struct Lattice_tetrahedralization
 /// the particles of `request` in `domain` aligned with `field`, connected into the tets of
 /// `c3t3` (empty; filled in place: a regular triangulation that flips made non-regular cannot be
 /// moved while CGAL's assertions are on).
-/// `particles_done(report)` is called once the particles are placed; if it returns `false`
-/// (a visitor asked to stop), or once `time_limit` is reached, the stages that a valid mesh does
-/// not need (the boundary refinement, the flips) do not run.
+/// `particles_done(report)` is called once the particles are placed and returns `false` if a
+/// visitor asks to stop. After a stop or once `time_limit` is reached, the boundary refinement
+/// does not run; the flips neither, but for tetrahedral lattices, which skip them at the time
+/// limit only (`Lattice_tetrahedralization_options::for_tetrahedral_lattice`).
 template <class C3T3, class MeshDomain, class FrameField, class ParticlesDone>
 Lattice_tetrahedralization<MeshDomain>
 lattice_tetrahedralization(C3T3& c3t3, const MeshDomain& domain, const FrameField& field, Lattice_request request,
