@@ -595,16 +595,16 @@ void test_stopping()
   { // lattice meshes, with the generated field too (its smoothing is a stage)
     TLM::Lattice_mesh_report r;
     const C3T3 timed = CGAL::make_lattice_mesh_3<C3T3>(domain, identity,
-        TLM::parameters::mesh_report(&r, few.maximum_running_time(now)));
+        TLM::parameters::report(&r, few.maximum_running_time(now)));
     VVM_CHECK(r.time_limit_reached && !r.stopped_by_visitor && r.gsm_time == 0);
     VVM_CHECK(valid_complex(timed));
     const C3T3 timed_field = CGAL::make_lattice_mesh_3<C3T3>(domain,
-        TLM::parameters::mesh_report(&r, few.maximum_running_time(now)));
+        TLM::parameters::report(&r, few.maximum_running_time(now)));
     VVM_CHECK(r.time_limit_reached && r.gsm_time == 0);
     VVM_CHECK(valid_complex(timed_field));
     calls = 0;
     const C3T3 visited = CGAL::make_lattice_mesh_3<C3T3>(domain, identity,
-        TLM::parameters::mesh_report(&r, few.visitor(stop_at_once)));
+        TLM::parameters::report(&r, few.visitor(stop_at_once)));
     VVM_CHECK(r.stopped_by_visitor && !r.time_limit_reached && r.gsm_time == 0);
     VVM_CHECK_EQUAL(calls, 1);
     VVM_CHECK(valid_complex(visited));
@@ -612,23 +612,29 @@ void test_stopping()
   { // hex-dominant meshes: the tets stay tetrahedra
     HDM::Hex_dominant_report r;
     const auto timed = CGAL::make_hex_dominant_mesh_3<C3T3>(domain, identity,
-        HDM::parameters::hex_dominant_report(&r, few.maximum_running_time(now)));
+        HDM::parameters::report(&r, few.maximum_running_time(now)));
     VVM_CHECK(r.time_limit_reached && !r.stopped_by_visitor && r.merge.stopped);
     VVM_CHECK(all_tetrahedra(timed, r.merge.number_of_tets));
     calls = 0;
     C3T3 tets;
     const auto visited = CGAL::make_hex_dominant_mesh_3<C3T3>(domain, identity,
-        HDM::parameters::hex_dominant_report(&r, HDM::parameters::stage_visitor(stop_at_once,
-            HDM::parameters::tetrahedral_mesh(&tets, few))));
+        HDM::parameters::report(&r, HDM::parameters::tetrahedral_mesh(&tets, few.visitor(stop_at_once))));
     VVM_CHECK(r.stopped_by_visitor && !r.time_limit_reached && r.merge.stopped);
-    VVM_CHECK_EQUAL(calls, 3); // told of each stage
+    VVM_CHECK_EQUAL(calls, 1); // not told of anything after its stop
     VVM_CHECK(all_tetrahedra(visited, r.merge.number_of_tets));
+    // the deprecated stage visitor: told of each stage, whatever it returned
+    calls = 0;
+    const auto staged = CGAL::make_hex_dominant_mesh_3<C3T3>(domain, identity,
+        HDM::parameters::report(&r, HDM::parameters::stage_visitor(stop_at_once, few)));
+    VVM_CHECK(r.stopped_by_visitor && !r.time_limit_reached && r.merge.stopped);
+    VVM_CHECK_EQUAL(calls, 3);
+    VVM_CHECK(all_tetrahedra(staged, r.merge.number_of_tets));
 
     // tets_to_hex_dominant on the same tets: hexahedra without a limit, none with one up at once
     HDM::Hex_dominant_merge_report m;
-    const auto merged = CGAL::tets_to_hex_dominant(tets, HDM::parameters::merge_report(&m));
+    const auto merged = CGAL::tets_to_hex_dominant(tets, HDM::parameters::report(&m));
     VVM_CHECK(!m.stopped && HDM::hex_dominant_statistics(merged).number_of_hexahedra > 0);
-    const auto cut = CGAL::tets_to_hex_dominant(tets, HDM::parameters::merge_report(&m, params::maximum_running_time(now)));
+    const auto cut = CGAL::tets_to_hex_dominant(tets, HDM::parameters::report(&m, params::maximum_running_time(now)));
     VVM_CHECK(m.stopped);
     VVM_CHECK(all_tetrahedra(cut, m.number_of_tets));
     refused("tets_to_hex_dominant", "maximum_running_time -1", {"maximum_running_time"},
@@ -650,6 +656,136 @@ void test_stopping()
   }
 }
 
+// The reports one visitor taking `const VVM::Stage_report&` is given by an entry point: each
+// stage's rounds, then its end, in blocks; the stages whose end came, in order.
+struct Stage_log
+{
+  std::vector<CGAL::VVM::Stage_report> seen;
+  bool (*stop)(const CGAL::VVM::Stage_report&) = nullptr;
+
+  auto visitor()
+  {
+    return [this](const CGAL::VVM::Stage_report& r) {
+      seen.push_back(r);
+      return !(stop && stop(r));
+    };
+  }
+  std::vector<CGAL::VVM::Stage> ends() const
+  {
+    std::vector<CGAL::VVM::Stage> e;
+    for(const auto& r : seen)
+      if(r.stage_done) e.push_back(r.stage);
+    return e;
+  }
+  int rounds(CGAL::VVM::Stage s) const
+  {
+    int n = 0;
+    for(const auto& r : seen) n += !r.stage_done && r.stage == s;
+    return n;
+  }
+  // every round is followed by a round of its stage or by the stage's end; each end reports the
+  // rounds before it (the particles count theirs from 1 at each level)
+  bool in_blocks() const
+  {
+    int block = 0;
+    for(std::size_t i = 0; i < seen.size(); ++i) {
+      if(seen[i].stage_done) {
+        if(seen[i].stage != CGAL::VVM::Stage::PARTICLES && seen[i].round != block) return false;
+        block = 0;
+        continue;
+      }
+      ++block;
+      if(i + 1 == seen.size() || seen[i + 1].stage != seen[i].stage) return false;
+    }
+    return true;
+  }
+};
+
+// One visitor for every entry point (a callable taking `const VVM::Stage_report&`) is told of
+// each stage's rounds and end, in order, and the reports agree with what it saw; a stop at a
+// stage's end keeps the stages after it from running
+void test_stage_reports()
+{
+  typedef CGAL::VVM::Stage Stage;
+  const Domain domain = sphere_domain();
+  const Constant_field identity;
+  const auto few = TLM::parameters::number_of_particles(std::size_t(600));
+
+  { // GSM: its rounds, then its polishing
+    C3T3 c3t3 = sphere_mesh();
+    Stage_log log;
+    GSM::Optimization_report r;
+    const auto code = CGAL::gsm_optimize_mesh_3(c3t3, domain, GSM::parameters::report(&r, params::visitor(log.visitor())));
+    VVM_CHECK(log.ends() == std::vector<Stage>({Stage::OPTIMIZATION, Stage::POLISHING}));
+    VVM_CHECK(log.in_blocks());
+    VVM_CHECK_EQUAL(r.number_of_rounds, log.rounds(Stage::OPTIMIZATION));
+    VVM_CHECK_EQUAL(r.number_of_polishing_rounds, log.rounds(Stage::POLISHING));
+    VVM_CHECK(r.number_of_rounds > 0 && r.number_of_moves > 0 && r.return_code == code && r.time > 0);
+    VVM_CHECK(!r.stopped_by_visitor && !r.time_limit_reached);
+    const auto q = GSM::mesh_quality_statistics(c3t3);
+    VVM_CHECK_EQUAL(r.min_dihedral_angle, q.min_dihedral_angle); // after the last round: the result's
+    // a report alone, without a visitor, is the same
+    C3T3 again = sphere_mesh();
+    GSM::Optimization_report alone;
+    CGAL::gsm_optimize_mesh_3(again, domain, GSM::parameters::report(&alone));
+    VVM_CHECK(alone.number_of_rounds == r.number_of_rounds && alone.number_of_moves == r.number_of_moves &&
+              alone.min_dihedral_angle == r.min_dihedral_angle);
+  }
+  { // particles
+    Stage_log log;
+    const auto p = CGAL::lattice_particles_3(domain, identity, few.visitor(log.visitor()));
+    VVM_CHECK(log.ends() == std::vector<Stage>({Stage::PARTICLES}));
+    VVM_CHECK(log.in_blocks());
+    VVM_CHECK(log.rounds(Stage::PARTICLES) == p.number_of_rounds && log.seen.back().round == p.number_of_rounds);
+  }
+  { // lattice meshes: particles, tets, then GSM's flips and polishing; a stop after the tets
+    Stage_log log;
+    TLM::Lattice_mesh_report r;
+    const C3T3 c3t3 = CGAL::make_lattice_mesh_3<C3T3>(domain, identity, TLM::parameters::report(&r, few.visitor(log.visitor())));
+    VVM_CHECK(log.ends() ==
+              std::vector<Stage>({Stage::PARTICLES, Stage::TETRAHEDRA, Stage::OPTIMIZATION, Stage::POLISHING}));
+    VVM_CHECK(log.in_blocks());
+    VVM_CHECK(!r.stopped_by_visitor && r.gsm_time > 0 && valid_complex(c3t3));
+    Stage_log stopped;
+    stopped.stop = [](const CGAL::VVM::Stage_report& e) { return e.stage_done && e.stage == CGAL::VVM::Stage::TETRAHEDRA; };
+    const C3T3 tets = CGAL::make_lattice_mesh_3<C3T3>(domain, identity, TLM::parameters::report(&r, few.visitor(stopped.visitor())));
+    VVM_CHECK(stopped.ends() == std::vector<Stage>({Stage::PARTICLES, Stage::TETRAHEDRA}));
+    VVM_CHECK(r.stopped_by_visitor && r.gsm_time == 0 && valid_complex(tets));
+  }
+  { // hex-dominant meshes, and the merging alone
+    Stage_log log;
+    HDM::Hex_dominant_report r;
+    C3T3 tets;
+    CGAL::make_hex_dominant_mesh_3<C3T3>(domain, identity,
+        HDM::parameters::report(&r, HDM::parameters::tetrahedral_mesh(&tets, few.visitor(log.visitor()))));
+    VVM_CHECK(log.ends() == std::vector<Stage>({Stage::PARTICLES, Stage::TETRAHEDRA, Stage::MERGING}));
+    VVM_CHECK(log.in_blocks());
+    VVM_CHECK(!r.stopped_by_visitor && r.merge.number_of_tets > 0);
+    Stage_log merging;
+    CGAL::tets_to_hex_dominant(tets, params::visitor(merging.visitor()));
+    VVM_CHECK(merging.ends() == std::vector<Stage>({Stage::MERGING}) && merging.seen.size() == 1);
+  }
+  { // cross fields: the rounds' reports carry the energies of the result
+    Stage_log log;
+    std::vector<double> energies;
+    const auto g = CGAL::Frame_fields::generate_cross_field_3(sphere_mesh(), params::visitor(log.visitor()));
+    const auto h = CGAL::Frame_fields::generate_cross_field_3(sphere_mesh(), params::visitor(
+        [&energies](const CGAL::Frame_fields::Cross_field_round_report& r) { energies.push_back(r.energy); }));
+    VVM_CHECK(log.ends() == std::vector<Stage>({Stage::FRAME_FIELD}));
+    VVM_CHECK(log.in_blocks());
+    VVM_CHECK_EQUAL(std::size_t(log.rounds(Stage::FRAME_FIELD)) + 1, g.round_energies.size());
+    VVM_CHECK(energies == std::vector<double>(h.round_energies.begin() + 1, h.round_energies.end()));
+  }
+  { // the former names of the report parameters still work
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wdeprecated-declarations"
+    TLM::Lattice_mesh_report r;
+    CGAL::make_lattice_mesh_3<C3T3>(domain, identity, TLM::parameters::mesh_report(&r, few));
+    VVM_CHECK(r.number_of_particles > 0);
+#pragma GCC diagnostic pop
+  }
+}
+
 } // namespace
 
 int main(int argc, char** argv)
@@ -662,5 +798,6 @@ int main(int argc, char** argv)
       {"hex_dominant", test_hex_dominant},
       {"frame_fields", test_frame_fields},
       {"files", test_files},
-      {"stopping", test_stopping}});
+      {"stopping", test_stopping},
+      {"stage_reports", test_stage_reports}});
 }

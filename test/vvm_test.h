@@ -46,6 +46,14 @@ bool check_equal(const A& a, const B& b, const char* what, const char* file, int
   return a == b;
 }
 
+// a < b, printing both on failure (false for NaN)
+inline bool check_less(double a, double b, const char* what, const char* file, int line)
+{
+  const bool ok = a < b;
+  if(!check(ok, what, file, line)) std::cerr.precision(15), std::cerr << "    got " << a << ", bound " << b << "\n";
+  return ok;
+}
+
 inline bool check_close(double a, double b, double tol, const char* what, const char* file, int line)
 {
   const bool ok = std::abs(a - b) <= tol; // false for NaN
@@ -167,5 +175,6 @@ inline int run(int argc, char** argv, const char* program, std::initializer_list
 #define VVM_CHECK(cond) vvm_test::check(bool(cond), #cond, __FILE__, __LINE__)
 #define VVM_CHECK_EQUAL(a, b) vvm_test::check_equal((a), (b), #a " == " #b, __FILE__, __LINE__)
 #define VVM_CHECK_CLOSE(a, b, tol) vvm_test::check_close((a), (b), (tol), #a " ~ " #b, __FILE__, __LINE__)
+#define VVM_CHECK_LESS(a, b) vvm_test::check_less((a), (b), #a " < " #b, __FILE__, __LINE__)
 
 #endif // VVM_TEST_H

@@ -6,8 +6,10 @@ set -euo pipefail
 # ccache: the build compiles through it when present (CMakeLists.txt).
 # pybind11-dev, python3-dev: the Python module vvm; python3-pytest its tests;
 # python3-matplotlib its example (examples/python), which the tests run.
+# doxygen: the manuals' HTML (cmake --build build --target doc) and the test that they build
+# without warnings (doc_without_warnings).
 packages=(g++ make cmake ccache libcgal-dev libeigen3-dev libtbb-dev libboost-dev liblbfgspp-dev python3-meshio gmsh tetgen zlib1g-dev
-          pybind11-dev python3-dev python3-pytest python3-matplotlib)
+          pybind11-dev python3-dev python3-pytest python3-matplotlib doxygen)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "ok installed" || missing+=("$p")

@@ -9,16 +9,9 @@
 
 #include "compare_optimizers.h"
 
-#include <tbb/global_control.h>
-
-#include <cstdlib>
-#include <exception>
-#include <filesystem>
 #include <iostream>
-#include <memory>
-#include <sstream>
 #include <string>
-#include <thread>
+#include <vector>
 
 namespace vvm_benchmark {
 
@@ -73,66 +66,24 @@ const char* usage =
 Options parse_command_line(int argc, char** argv)
 {
   Options o;
-  for(int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
-    auto value = [&]() -> std::string {
-      if(i + 1 >= argc) throw Input_error("option " + arg + " expects a value");
-      return argv[++i];
-    };
-    if(arg == "--vertices") {
-      const long n = parse_number<long>(arg, value());
-      if(n < 100 || n > 20000000) throw Input_error("--vertices must be between 100 and 2e7");
-      o.target_vertices = std::size_t(n);
-    } else if(arg == "--features-angle") {
-      o.features_angle = parse_number<double>(arg, value());
-      if(!(o.features_angle >= 0 && o.features_angle < 180))
-        throw Input_error("--features-angle must be in [0, 180)");
-    } else if(arg == "--chains") {
-      std::stringstream ss(value());
-      for(std::string c; std::getline(ss, c, ',');)
-        if(!c.empty()) o.chains.push_back(c);
-    } else if(arg == "--repeat") {
-      o.repeat = parse_number<int>(arg, value());
-      if(o.repeat < 1) throw Input_error("--repeat must be at least 1");
-    } else if(arg == "--threads") {
-      o.threads = parse_number<int>(arg, value());
-      if(o.threads < 0) throw Input_error("--threads must be non-negative");
-    } else if(arg == "--json") {
-      o.json_file = value();
-    } else if(arg == "--out-dir") {
-      o.out_dir = value();
-    } else if(arg == "--seed") {
-      o.seed = parse_number<unsigned int>(arg, value());
-    } else if(arg == "--field") {
-      o.field = value();
-    } else if(arg == "--sizing") {
-      o.sizing = value();
-      if(o.sizing != "uniform" && o.sizing != "thickness")
-        throw Input_error("unknown --sizing '" + o.sizing + "' (known: uniform, thickness)");
-    } else if(arg == "--cells-across") {
-      o.cells_across = parse_number<double>(arg, value());
+  Command_line c(argc, argv, usage);
+  while(c.next()) {
+    if(c.is("--vertices")) o.target_vertices = c.number_in<std::size_t>(100, 20000000);
+    else if(c.is("--chains")) o.chains = c.list();
+    else if(c.is("--repeat")) o.repeat = c.number_in<int>(1, 1000);
+    else if(c.is("--field")) o.field = c.value();
+    else if(c.is("--sizing")) o.sizing = c.one_of({"uniform", "thickness"});
+    else if(c.is("--cells-across")) {
+      o.cells_across = c.number<double>();
       if(!(o.cells_across > 0 && o.cells_across <= 100)) throw Input_error("--cells-across must be in (0, 100]");
-    } else if(arg == "--gradation") {
-      o.gradation = parse_number<double>(arg, value());
+    } else if(c.is("--gradation")) {
+      o.gradation = c.number<double>();
       if(!(o.gradation > 0 && o.gradation <= 10)) throw Input_error("--gradation must be in (0, 10]");
-    } else if(arg == "--verbose") {
-      o.verbose = true;
-    } else if(arg == "--graded") {
-      o.graded = true;
-    } else if(arg == "--refuse-self-intersecting") {
-      o.refuse_self_intersecting = true;
-    } else if(arg == "--help" || arg == "-h") {
-      std::cout << usage;
-      std::exit(0);
-    } else if(!arg.empty() && arg[0] == '-') {
-      throw Input_error("unknown option " + arg);
-    } else if(o.input.empty()) {
-      o.input = arg;
-    } else {
-      throw Input_error("more than one INPUT given ('" + o.input + "', '" + arg + "')");
-    }
+    } else if(c.is("--graded")) o.graded = true;
+    else if(c.is("--refuse-self-intersecting")) o.refuse_self_intersecting = true;
+    else c.common(o);
   }
-  if(o.input.empty()) throw Input_error("no INPUT given");
+  Command_line::require_input(o);
   if(o.chains.empty()) o.chains = default_chains();
   const std::string field_domain = o.field == "anisotropic-cube" ? "cube" : "sphere";
   if(!o.field.empty() && o.field != "adaptive-sphere" && o.field != "anisotropic-sphere" &&
@@ -154,25 +105,7 @@ Options parse_command_line(int argc, char** argv)
 int main(int argc, char** argv)
 {
   using namespace vvm_benchmark;
-  try {
-    const Options options = parse_command_line(argc, argv);
-    std::unique_ptr<tbb::global_control> threads;
-    if(options.threads > 0)
-      threads = std::make_unique<tbb::global_control>(
-          tbb::global_control::max_allowed_parallelism, std::size_t(options.threads));
-    if(!options.out_dir.empty()) {
-      std::error_code error;
-      std::filesystem::create_directories(options.out_dir, error);
-      if(error) throw Input_error("cannot create '" + options.out_dir + "': " + error.message());
-    }
-    if(is_implicit_domain_name(options.input))
-      return run_implicit_domain(options);
-    return run_polyhedral_domain(options);
-  } catch(const Input_error& e) {
-    std::cerr << "compare_optimizers: error: " << e.what() << "\n" << usage;
-    return 2;
-  } catch(const std::exception& e) {
-    std::cerr << "compare_optimizers: failed: " << e.what() << "\n";
-    return 1;
-  }
+  return benchmark_main("compare_optimizers", usage, argc, argv, parse_command_line, [](const Options& options) {
+    return is_implicit_domain_name(options.input) ? run_implicit_domain(options) : run_polyhedral_domain(options);
+  });
 }

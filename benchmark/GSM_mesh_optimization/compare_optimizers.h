@@ -16,18 +16,12 @@
 
 namespace vvm_benchmark {
 
-struct Options
+// INPUT: a surface file, or sphere / cube / torus
+struct Options : Common_options
 {
-  std::string input;                   // a surface file, or sphere / cube / torus
   std::size_t target_vertices = 10000; // --vertices
-  double features_angle = -1;          // --features-angle; < 0: not given
   std::vector<std::string> chains;     // --chains
   int repeat = 1;                      // --repeat
-  int threads = 0;                     // --threads; 0: all cores
-  std::string json_file;               // --json
-  std::string out_dir;                 // --out-dir
-  unsigned int seed = 0;               // --seed
-  bool verbose = false;                // --verbose
   bool graded = false;                 // --graded
   bool refuse_self_intersecting = false; // --refuse-self-intersecting
   std::string field;                   // --field: adaptive-sphere, anisotropic-sphere, anisotropic-cube
@@ -35,7 +29,6 @@ struct Options
   double cells_across = 3;             // --cells-across, with --sizing thickness
   double gradation = 0.3;              // --gradation, with --sizing thickness
 };
-
 
 // The chains run by default, in order.
 std::vector<std::string> default_chains();

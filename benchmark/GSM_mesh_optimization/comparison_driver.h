@@ -10,6 +10,9 @@
 #include "boundary_layering.h"
 #include "compare_optimizers.h"
 #include "dihedral_histogram_svg.h"
+#include "json_lines.h"
+#include "mesh_3_optimizers.h"
+#include "table.h"
 #include "tetrahedral_remeshing_step.h"
 
 #include <CGAL/GSM_mesh_optimization/IO/write_VTU_with_quality.h>
@@ -17,19 +20,11 @@
 #include <CGAL/GSM_mesh_optimization/mesh_quality_statistics.h>
 #include <CGAL/GSM_mesh_optimization/mesh_with_vertex_count.h>
 
-// make_mesh_3.h first: with CGAL_LINKED_WITH_TBB, CGAL 5.5.1's optimizer headers
-// rely on TBB headers that only the mesher includes.
-#include <CGAL/make_mesh_3.h>
-
 #include <CGAL/IO/File_medit.h>
 #include <CGAL/Mesh_criteria_3.h>
 #include <CGAL/Random.h>
 #include <CGAL/Real_timer.h>
-#include <CGAL/exude_mesh_3.h>
 #include <CGAL/gsm_optimize_mesh_3.h>
-#include <CGAL/lloyd_optimize_mesh_3.h>
-#include <CGAL/odt_optimize_mesh_3.h>
-#include <CGAL/perturb_mesh_3.h>
 
 #include <Eigen/Eigenvalues>
 
@@ -47,27 +42,13 @@ namespace vvm_benchmark {
 
 namespace GSM = CGAL::GSM_mesh_optimization;
 
-inline const char* return_code_name(CGAL::Mesh_optimization_return_code c)
-{
-  switch(c) {
-  case CGAL::BOUND_REACHED: return "BOUND_REACHED";
-  case CGAL::TIME_LIMIT_REACHED: return "TIME_LIMIT_REACHED";
-  case CGAL::CANT_IMPROVE_ANYMORE: return "CANT_IMPROVE_ANYMORE";
-  case CGAL::CONVERGENCE_REACHED: return "CONVERGENCE_REACHED";
-  case CGAL::MAX_ITERATION_NUMBER_REACHED: return "MAX_ITERATION_NUMBER_REACHED";
-  case CGAL::ALL_VERTICES_FROZEN: return "ALL_VERTICES_FROZEN";
-  default: return "UNKNOWN";
-  }
-}
-
 // "odt+perturb+exude" -> {"odt", "perturb", "exude"}; "init" -> {}
 inline std::vector<std::string> chain_steps(const std::string& chain)
 {
   static const std::vector<std::string> known{"lloyd", "odt", "perturb", "exude", "gsm", "gsm-esm", "gsm-uniform", "remesh"};
   std::vector<std::string> steps;
   if(chain == "init") return steps;
-  std::stringstream ss(chain);
-  for(std::string step; std::getline(ss, step, '+');) {
+  for(const std::string& step : split(chain, '+')) {
     if(std::find(known.begin(), known.end(), step) == known.end())
       throw Input_error("unknown optimizer '" + step + "' in chain '" + chain +
                         "' (known: init, lloyd, odt, perturb, exude, gsm, gsm-esm, gsm-uniform, remesh, joined by '+')");
@@ -186,9 +167,10 @@ public:
     make_initial_mesh();
     if(boundary_distance_) initial_boundary_distance_ = boundary_distance_(initial_);
     std::vector<Chain_result> results;
+    Json_lines_file json(options_.json_file, Json_lines_file::REPLACE);
     for(const std::string& chain : options_.chains) {
       results.push_back(run_chain(chain));
-      if(!options_.json_file.empty()) write_json(results.back());
+      json.write(json_line(results.back()));
     }
     print_table(results);
     return 0;
@@ -274,7 +256,6 @@ private:
 
   Chain_result run_chain(const std::string& chain)
   {
-    namespace params = CGAL::parameters;
     const std::vector<std::string> steps = chain_steps(chain);
     Chain_result result;
     result.chain = chain;
@@ -291,10 +272,8 @@ private:
       for(const std::string& step : steps) {
         CGAL::get_default_random() = CGAL::Random(options_.seed);
         CGAL::Mesh_optimization_return_code code;
-        if(step == "lloyd")
-          code = CGAL::lloyd_optimize_mesh_3(c3t3, domain_);
-        else if(step == "odt")
-          code = CGAL::odt_optimize_mesh_3(c3t3, domain_);
+        if(is_mesh_3_optimizer(step))
+          code = run_mesh_3_optimizer(step, c3t3, domain_);
         else if(step == "gsm" || step == "gsm-esm" || step == "gsm-uniform")
           code = run_gsm(
               c3t3, GSM::parameters::uniform_sizing(step == "gsm-uniform",
@@ -304,10 +283,7 @@ private:
         else if(step == "remesh") {
           tetrahedral_remeshing_step(c3t3, remeshing_length);
           code = CGAL::MAX_ITERATION_NUMBER_REACHED;
-        } else if(step == "perturb")
-          code = CGAL::perturb_mesh_3(c3t3, domain_, params::sliver_bound = 0);
-        else
-          code = CGAL::exude_mesh_3(c3t3, params::sliver_bound = 0);
+        }
         codes += (codes.empty() ? "" : ",") + step + ":" + return_code_name(code);
       }
       timer.stop();
@@ -358,30 +334,25 @@ private:
       throw std::runtime_error("cannot write into '" + options_.out_dir + "'");
   }
 
-  void write_json(const Chain_result& r) const
+  Json_line json_line(const Chain_result& r) const
   {
-    std::ofstream os(options_.json_file, first_json_line_ ? std::ios::trunc : std::ios::app);
-    first_json_line_ = false;
     const GSM::Mesh_quality_statistics& q = r.quality;
-    os.precision(17);
-    os << "{\"model\": \"" << model_ << "\", \"chain\": \"" << r.chain
-       << "\", \"n_vertices\": " << q.number_of_vertices << ", \"n_tets\": " << q.number_of_cells
-       << ", \"theta_min\": " << q.min_dihedral_angle << ", \"theta_max\": " << q.max_dihedral_angle
-       << ", \"mean_min_dihedral\": " << q.mean_min_dihedral_angle;
+    Json_line j;
+    j.add("model", model_).add("chain", r.chain).add("n_vertices", q.number_of_vertices)
+        .add("n_tets", q.number_of_cells).add("theta_min", q.min_dihedral_angle)
+        .add("theta_max", q.max_dihedral_angle).add("mean_min_dihedral", q.mean_min_dihedral_angle);
     for(std::size_t i = 0; i < q.n_min_dihedral_below.size(); ++i)
-      os << ", \"n_min_dih_lt" << int(q.dihedral_thresholds[i]) << "\": " << q.n_min_dihedral_below[i];
-    os << ", \"gamma_min\": " << q.min_radius_ratio << ", \"gamma_mean\": " << q.mean_radius_ratio
-       << ", \"n_inverted\": " << q.number_of_inverted_cells << ", \"opt_time_s\": " << r.opt_time_s
-       << ", \"hausdorff_to_input\": " << r.boundary_distance
-       << ", \"boundary_vertex_share\": " << r.layering.boundary_vertex_share
-       << ", \"boundary_edge_length\": " << r.layering.boundary_edge_length
-       << ", \"first_layer_ratio\": " << r.layering.first_layer_ratio
-       << ", \"field\": \"" << (field_.from_input ? "" : field_.name)
-       << "\", \"sizing\": \"" << (field_.from_input ? field_.name : std::string("uniform"))
-       << "\", \"repeat\": " << (std::max)(1, options_.repeat) << ", \"threads\": " << options_.threads
-       << ", \"edge_size\": " << edge_size_ << ", \"mesh_time_s\": " << mesh_time_s_
-       << ", \"return_codes\": \"" << r.return_codes << "\"}\n";
-    if(!os) throw std::runtime_error("cannot write '" + options_.json_file + "'");
+      j.add("n_min_dih_lt" + std::to_string(int(q.dihedral_thresholds[i])), q.n_min_dihedral_below[i]);
+    return j.add("gamma_min", q.min_radius_ratio).add("gamma_mean", q.mean_radius_ratio)
+        .add("n_inverted", q.number_of_inverted_cells).add("opt_time_s", r.opt_time_s)
+        .add("hausdorff_to_input", r.boundary_distance)
+        .add("boundary_vertex_share", r.layering.boundary_vertex_share)
+        .add("boundary_edge_length", r.layering.boundary_edge_length)
+        .add("first_layer_ratio", r.layering.first_layer_ratio)
+        .add("field", field_.from_input ? std::string() : field_.name)
+        .add("sizing", field_.from_input ? field_.name : std::string("uniform"))
+        .add("repeat", (std::max)(1, options_.repeat)).add("threads", options_.threads)
+        .add("edge_size", edge_size_).add("mesh_time_s", mesh_time_s_).add("return_codes", r.return_codes);
   }
 
   void print_table(const std::vector<Chain_result>& results) const
@@ -399,25 +370,28 @@ private:
                 100 * initial_layering_.boundary_vertex_share, initial_layering_.first_layer_ratio);
     if(!field_.name.empty() && !field_.from_input)
       std::printf("quality measured in the metric of %s (each tet mapped by M^1/2)\n", field_.name.c_str());
-    std::printf("%-22s %7s %7s %7s %7s %7s %6s %6s %6s %6s %6s %6s %4s %9s %7s%s\n", "chain", "verts",
-                "tets", "th_min", "th_max", "mean_mn", "<10", "<20", "<30", "<40", "g_min",
-                "g_mean", "inv", "opt_s", "/p+e", boundary_distance_ ? "  hd/hd0" : "");
+    std::vector<Table::Column> columns{{"chain", 22, -1, true}, {"verts", 7}, {"tets", 7}, {"th_min", 7, 2},
+                                       {"th_max", 7, 2}, {"mean_mn", 7, 2}, {"<10", 6}, {"<20", 6}, {"<30", 6},
+                                       {"<40", 6}, {"g_min", 6, 3}, {"g_mean", 6, 3}, {"inv", 4}, {"opt_s", 9, 3},
+                                       {"/p+e", 7, 2}};
+    const bool distances = bool(boundary_distance_);
+    if(distances) columns.push_back({" hd/hd0", 7, 3});
+    const Table table(columns);
+    table.print_header();
     for(const Chain_result& r : results) {
       const GSM::Mesh_quality_statistics& q = r.quality;
-      char ratio[32] = "-";
-      if(perturb_exude_time > 0)
-        std::snprintf(ratio, sizeof ratio, "%.2f", r.opt_time_s / perturb_exude_time);
-      char distance[32] = "";
-      if(r.boundary_distance >= 0 && initial_boundary_distance_ > 0)
-        std::snprintf(distance, sizeof distance, "  %6.3f", r.boundary_distance / initial_boundary_distance_);
-      std::printf("%-22s %7zu %7zu %7.2f %7.2f %7.2f %6zu %6zu %6zu %6zu %6.3f %6.3f %4zu %9.3f %7s%s\n",
-                  r.chain.c_str(), q.number_of_vertices, q.number_of_cells, q.min_dihedral_angle,
-                  q.max_dihedral_angle, q.mean_min_dihedral_angle, q.n_min_dihedral_below[0],
-                  q.n_min_dihedral_below[1], q.n_min_dihedral_below[2], q.n_min_dihedral_below[3],
-                  q.min_radius_ratio, q.mean_radius_ratio, q.number_of_inverted_cells, r.opt_time_s,
-                  ratio, distance);
+      std::vector<Table::Cell> row{r.chain, q.number_of_vertices, q.number_of_cells, q.min_dihedral_angle,
+                                   q.max_dihedral_angle, q.mean_min_dihedral_angle, q.n_min_dihedral_below[0],
+                                   q.n_min_dihedral_below[1], q.n_min_dihedral_below[2], q.n_min_dihedral_below[3],
+                                   q.min_radius_ratio, q.mean_radius_ratio, q.number_of_inverted_cells, r.opt_time_s,
+                                   perturb_exude_time > 0 ? Table::Cell(r.opt_time_s / perturb_exude_time)
+                                                          : Table::Cell::none()};
+      if(distances)
+        row.push_back(r.boundary_distance >= 0 && initial_boundary_distance_ > 0
+                          ? Table::Cell(r.boundary_distance / initial_boundary_distance_)
+                          : Table::Cell::none());
+      table.print_row(row);
     }
-    std::fflush(stdout);
   }
 
   const Options& options_;
@@ -432,7 +406,6 @@ private:
   double edge_size_ = 0;
   double mesh_time_s_ = 0;
   double remeshing_edge_length_ = 0;
-  mutable bool first_json_line_ = true;
 };
 
 } // namespace vvm_benchmark

@@ -14,8 +14,11 @@
 #include <CGAL/make_mesh_3.h> // first: it brings the TBB headers CGAL's other Mesh_3 headers need
 
 #include "box_surface.h"
-#include "thickness_sizing.h"
 #include "command_line.h"
+#include "json_lines.h"
+#include "surface_input.h"
+#include "table.h"
+#include "thickness_sizing.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Frame_fields/Closed_form_frame_field_3.h>
@@ -57,12 +60,12 @@
 
 namespace {
 
-typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+typedef vvm_benchmark::K K;
 typedef K::Point_3 Point_3;
-typedef CGAL::Surface_mesh<Point_3> Surface_mesh;
-typedef CGAL::Polyhedral_mesh_domain_with_features_3<K, Surface_mesh> Domain;
-typedef CGAL::Mesh_triangulation_3<Domain, CGAL::Default, CGAL::Sequential_tag>::type Tr;
-typedef CGAL::Mesh_complex_3_in_triangulation_3<Tr, Domain::Corner_index, Domain::Curve_index> C3T3;
+typedef vvm_benchmark::Surface_mesh Surface_mesh;
+typedef vvm_benchmark::Polyhedral_domain Domain;
+typedef vvm_benchmark::Polyhedral_tr Tr;
+typedef vvm_benchmark::Polyhedral_c3t3 C3T3;
 typedef CGAL::Frame_fields::Closed_form_frame_field_3<K> Field;
 typedef CGAL::Hex_dominant_mesh_3<Point_3> Mesh;
 namespace HDM = CGAL::Hex_dominant_meshing;
@@ -70,7 +73,6 @@ namespace TLM = CGAL::Tetrahedral_lattice_meshing;
 namespace FF = CGAL::Frame_fields;
 namespace PMP = CGAL::Polygon_mesh_processing;
 using vvm_benchmark::Input_error;
-using vvm_benchmark::parse_number;
 
 const char* usage =
     "usage: compare_hex_dominant INPUT [--particles N] [--features-angle DEG]\n"
@@ -115,65 +117,33 @@ std::optional<Eigen::Matrix3d> constant_frame(const std::string& f)
   return std::nullopt;
 }
 
-struct Options
+// INPUT: a surface file, or cube / warped-cube / cylinder
+struct Options : vvm_benchmark::Common_options
 {
-  std::string input, field, json_file, out_dir, sizing = "uniform";
+  std::string field, sizing = "uniform";
   std::size_t particles = 30000;
-  double features_angle = -1, q_bound = 0.5, boundary_distance = 0;
-  bool sweep = false, verbose = false;
-  int threads = 0, levels = -1;
-  unsigned seed = 0;
+  double q_bound = 0.5, boundary_distance = 0;
+  bool sweep = false;
+  int levels = -1;
 };
 
 Options parse_command_line(int argc, char** argv)
 {
   Options o;
-  for(int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
-    auto value = [&]() -> std::string {
-      if(i + 1 >= argc) throw Input_error("option " + arg + " expects a value");
-      return argv[++i];
-    };
-    if(arg == "--particles") {
-      const long n = parse_number<long>(arg, value());
-      if(n < 8 || n > 20000000) throw Input_error("--particles must be between 8 and 2e7");
-      o.particles = std::size_t(n);
-    } else if(arg == "--features-angle") {
-      o.features_angle = parse_number<double>(arg, value());
-      if(!(o.features_angle >= 0 && o.features_angle < 180)) throw Input_error("--features-angle must be in [0, 180)");
-    } else if(arg == "--field") o.field = value();
-    else if(arg == "--q-bound") {
-      o.q_bound = parse_number<double>(arg, value());
-      if(!(o.q_bound >= 0 && o.q_bound <= 1)) throw Input_error("--q-bound must be in [0, 1]");
-    } else if(arg == "--q-bound-sweep") o.sweep = true;
-    else if(arg == "--threads") {
-      o.threads = parse_number<int>(arg, value());
-      if(o.threads < 0) throw Input_error("--threads must be non-negative");
-    } else if(arg == "--json") o.json_file = value();
-    else if(arg == "--out-dir") o.out_dir = value();
-    else if(arg == "--boundary-distance") {
-      o.boundary_distance = parse_number<double>(arg, value());
+  vvm_benchmark::Command_line c(argc, argv, usage);
+  while(c.next()) {
+    if(c.is("--particles")) o.particles = c.number_in<std::size_t>(8, 20000000);
+    else if(c.is("--field")) o.field = c.value();
+    else if(c.is("--q-bound")) o.q_bound = c.number_in<double>(0, 1);
+    else if(c.is("--q-bound-sweep")) o.sweep = true;
+    else if(c.is("--boundary-distance")) {
+      o.boundary_distance = c.number<double>();
       if(!(o.boundary_distance >= 0)) throw Input_error("--boundary-distance must be non-negative");
-    }
-    else if(arg == "--seed") o.seed = parse_number<unsigned>(arg, value());
-    else if(arg == "--levels") {
-      o.levels = parse_number<int>(arg, value());
-      if(o.levels < 0 || o.levels > 6) throw Input_error("--levels must be in [0, 6]");
-    }
-    else if(arg == "--sizing") {
-      o.sizing = value();
-      if(o.sizing != "uniform" && o.sizing != "thickness")
-        throw Input_error("unknown --sizing '" + o.sizing + "' (known: uniform, thickness)");
-    }
-    else if(arg == "--verbose") o.verbose = true;
-    else if(arg == "--help" || arg == "-h") {
-      std::cout << usage;
-      std::exit(0);
-    } else if(!arg.empty() && arg[0] == '-') throw Input_error("unknown option " + arg);
-    else if(o.input.empty()) o.input = arg;
-    else throw Input_error("more than one INPUT given ('" + o.input + "', '" + arg + "')");
+    } else if(c.is("--levels")) o.levels = c.number_in<int>(0, 6);
+    else if(c.is("--sizing")) o.sizing = c.one_of({"uniform", "thickness"});
+    else c.common(o);
   }
-  if(o.input.empty()) throw Input_error("no INPUT given");
+  vvm_benchmark::Command_line::require_input(o);
   const bool builtin = o.input == "cube" || o.input == "warped-cube" || o.input == "cylinder";
   if(o.field.empty())
     o.field = o.input == "cube" ? "identity" : o.input == "warped-cube" ? "fig4.15e"
@@ -270,13 +240,7 @@ Surface_mesh boundary_of(const C3T3& c3t3)
   return triangle_soup_mesh(triangles);
 }
 
-// the Hausdorff distance from a to b, and from b to a
-std::pair<double, double> two_sided_distance(const Surface_mesh& a, const Surface_mesh& b, double spacing)
-{
-  const auto np = PMP::parameters::use_grid_sampling(true).grid_spacing(spacing);
-  return {PMP::approximate_Hausdorff_distance<CGAL::Parallel_if_available_tag>(a, b, np),
-          PMP::approximate_Hausdorff_distance<CGAL::Parallel_if_available_tag>(b, a, np)};
-}
+using vvm_benchmark::two_sided_distance;
 
 int run(const Options& o)
 {
@@ -302,11 +266,7 @@ int run(const Options& o)
     surface = tube_surface(256);
     model = "cylinder";
   } else {
-    try {
-      CGAL::GSM_mesh_optimization::IO::read_closed_surface(o.input, surface);
-    } catch(const std::invalid_argument& e) {
-      throw Input_error(e.what());
-    }
+    vvm_benchmark::read_surface_input(o.input, surface);
     model = CGAL::GSM_mesh_optimization::IO::file_stem(o.input);
   }
   volume = std::abs(PMP::volume(surface));
@@ -334,17 +294,16 @@ int run(const Options& o)
     for(int k = 0; k <= 9; ++k) bounds.push_back(0.1 * k);
   else
     bounds.push_back(o.q_bound);
-  const double spacing = std::sqrt(PMP::area(surface) / 2e5);
+  const double spacing = vvm_benchmark::distance_sampling_spacing(surface);
   double make_mesh_3_distance = -1;
   std::size_t make_mesh_3_vertices = 0;
-  std::ofstream json;
-  if(!o.json_file.empty()) {
-    json.open(o.json_file, std::ios::app);
-    if(!json) throw Input_error("cannot write '" + o.json_file + "'");
-  }
-  std::printf("%-10s %-16s %5s %8s %7s %6s %6s %6s %7s %6s %6s %6s %6s %7s %5s %5s %8s %7s %7s %7s %7s\n", "model", "field",
-              "Qb", "particles", "hex", "prism", "pyr", "tet", "H_vol%", "#hex%", "SJmin", "SJmean", "Vmin", "align",
-              "inv", "ncf", "hd/hd0", "t_part", "t_tets", "t_merge", "t_total");
+  vvm_benchmark::Json_lines_file json(o.json_file, vvm_benchmark::Json_lines_file::APPEND);
+  const vvm_benchmark::Table table({{"model", 10, -1, true}, {"field", 16, -1, true}, {"Qb", 5, 2},
+                                    {"particles", 8}, {"hex", 7}, {"prism", 6}, {"pyr", 6}, {"tet", 6},
+                                    {"H_vol%", 7, 2}, {"#hex%", 6, 2}, {"SJmin", 6, 3}, {"SJmean", 6, 3},
+                                    {"Vmin", 6, 3}, {"align", 7, 2}, {"inv", 5}, {"ncf", 5}, {"hd/hd0", 8, 3},
+                                    {"t_part", 7, 2}, {"t_tets", 7, 2}, {"t_merge", 7, 2}, {"t_total", 7, 2}});
+  table.print_header();
   C3T3 tets;
   for(double q : bounds) {
     namespace TP = TLM::parameters;
@@ -356,7 +315,7 @@ int run(const Options& o)
       for(int attempt = 0; attempt < 2; ++attempt) {
         auto np = TP::number_of_particles(std::size_t(std::llround(wanted)), TP::number_of_threads(o.threads,
             HDM::parameters::quality_bound(q, HDM::parameters::boundary_distance(o.boundary_distance,
-                HDM::parameters::hex_dominant_report(&report,
+                HDM::parameters::report(&report,
                     HDM::parameters::tetrahedral_mesh(&tets, CGAL::parameters::random_seed(o.seed).verbose(o.verbose)))))));
         mesh = o.levels < 0 ? CGAL::make_hex_dominant_mesh_3<C3T3>(domain, field, np)
                             : CGAL::make_hex_dominant_mesh_3<C3T3>(domain, field, TP::multiresolution_levels(o.levels, np));
@@ -369,7 +328,7 @@ int run(const Options& o)
       CGAL::Real_timer merge;
       merge.start();
       mesh = CGAL::tets_to_hex_dominant(tets, HDM::parameters::quality_bound(q, HDM::parameters::frame_field(std::cref(field),
-                                                  HDM::parameters::merge_report(&report.merge))));
+                                                  HDM::parameters::report(&report.merge))));
       report.merge_time = merge.time();
     }
     const HDM::Hex_dominant_statistics s = HDM::hex_dominant_statistics(mesh, B, &report.merge);
@@ -391,29 +350,27 @@ int run(const Options& o)
     }
     const double total = field_time + report.particle_time + report.tetrahedra_time + report.merge_time;
     const double ratio = make_mesh_3_distance > 1e-9 * std::sqrt(PMP::area(surface)) ? distance / make_mesh_3_distance : -1;
-    std::printf("%-10s %-16s %5.2f %8zu %7zu %6zu %6zu %6zu %7.2f %6.2f %6.3f %6.3f %6.3f %7.2f %5zu %5zu %8.3f %7.2f %7.2f %7.2f %7.2f\n",
-                model.c_str(), o.field.c_str(), q, mesh.points.size(), s.number_of_hexahedra, s.number_of_prisms,
-                s.number_of_pyramids, s.number_of_tetrahedra, s.hexahedron_volume_percent, s.hexahedron_count_percent,
-                s.scaled_jacobian_min, s.scaled_jacobian_mean, s.verdict_scaled_jacobian_min, s.alignment_error_mean,
-                s.number_of_inverted_cells, s.number_of_nonconforming_faces, ratio, field_time + report.particle_time,
-                report.tetrahedra_time, report.merge_time, total);
-    if(json)
-      json << "{\"model\": \"" << model << "\", \"field\": \"" << o.field << "\", \"sizing\": \"" << o.sizing
-           << "\", \"q_bound\": " << q
-           << ", \"n_particles\": " << mesh.points.size() << ", \"n_hex\": " << s.number_of_hexahedra
-           << ", \"n_prism\": " << s.number_of_prisms << ", \"n_pyramid\": " << s.number_of_pyramids
-           << ", \"n_tet\": " << s.number_of_tetrahedra << ", \"h_vol_percent\": " << s.hexahedron_volume_percent
-           << ", \"hex_count_percent\": " << s.hexahedron_count_percent << ", \"sj_min\": " << s.scaled_jacobian_min
-           << ", \"sj_mean\": " << s.scaled_jacobian_mean << ", \"verdict_sj_min\": " << s.verdict_scaled_jacobian_min
-           << ", \"verdict_sj_mean\": " << s.verdict_scaled_jacobian_mean
-           << ", \"alignment_error_mean_deg\": " << s.alignment_error_mean << ", \"hausdorff\": " << distance << ", \"hausdorff_mesh_to_surface\": " << directed.first
-           << ", \"hausdorff_surface_to_mesh\": " << directed.second
-           << ", \"hausdorff_make_mesh_3\": " << make_mesh_3_distance << ", \"make_mesh_3_vertices\": " << make_mesh_3_vertices
-           << ", \"hausdorff_ratio\": " << ratio << ", \"n_inverted\": " << s.number_of_inverted_cells
-           << ", \"n_nonconforming\": " << s.number_of_nonconforming_faces
-           << ", \"time_field_s\": " << field_time << ", \"time_particles_s\": " << report.particle_time
-           << ", \"time_tets_s\": " << report.tetrahedra_time << ", \"time_merge_s\": " << report.merge_time
-           << ", \"time_s\": " << total << "}\n";
+    table.print_row({model, o.field, q, mesh.points.size(), s.number_of_hexahedra, s.number_of_prisms,
+                     s.number_of_pyramids, s.number_of_tetrahedra, s.hexahedron_volume_percent,
+                     s.hexahedron_count_percent, s.scaled_jacobian_min, s.scaled_jacobian_mean,
+                     s.verdict_scaled_jacobian_min, s.alignment_error_mean, s.number_of_inverted_cells,
+                     s.number_of_nonconforming_faces, ratio, field_time + report.particle_time,
+                     report.tetrahedra_time, report.merge_time, total});
+    json.write(vvm_benchmark::Json_line()
+                   .add("model", model).add("field", o.field).add("sizing", o.sizing).add("q_bound", q)
+                   .add("n_particles", mesh.points.size()).add("n_hex", s.number_of_hexahedra)
+                   .add("n_prism", s.number_of_prisms).add("n_pyramid", s.number_of_pyramids)
+                   .add("n_tet", s.number_of_tetrahedra).add("h_vol_percent", s.hexahedron_volume_percent)
+                   .add("hex_count_percent", s.hexahedron_count_percent).add("sj_min", s.scaled_jacobian_min)
+                   .add("sj_mean", s.scaled_jacobian_mean).add("verdict_sj_min", s.verdict_scaled_jacobian_min)
+                   .add("verdict_sj_mean", s.verdict_scaled_jacobian_mean)
+                   .add("alignment_error_mean_deg", s.alignment_error_mean).add("hausdorff", distance)
+                   .add("hausdorff_mesh_to_surface", directed.first).add("hausdorff_surface_to_mesh", directed.second)
+                   .add("hausdorff_make_mesh_3", make_mesh_3_distance).add("make_mesh_3_vertices", make_mesh_3_vertices)
+                   .add("hausdorff_ratio", ratio).add("n_inverted", s.number_of_inverted_cells)
+                   .add("n_nonconforming", s.number_of_nonconforming_faces).add("time_field_s", field_time)
+                   .add("time_particles_s", report.particle_time).add("time_tets_s", report.tetrahedra_time)
+                   .add("time_merge_s", report.merge_time).add("time_s", total));
     if(!o.out_dir.empty() && q == bounds.front()) {
       std::vector<double> verdict; // Verdict's hexahedron measure: 0 for the other cells
       for(const auto& c : mesh.cells) {
@@ -443,25 +400,5 @@ int run(const Options& o)
 
 int main(int argc, char** argv)
 {
-  try {
-    const Options options = parse_command_line(argc, argv);
-    std::unique_ptr<tbb::global_control> threads;
-    if(options.threads > 0)
-      threads = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, std::size_t(options.threads));
-    if(!options.out_dir.empty()) {
-      std::error_code error;
-      std::filesystem::create_directories(options.out_dir, error);
-      if(error) throw Input_error("cannot create '" + options.out_dir + "': " + error.message());
-    }
-    return run(options);
-  } catch(const Input_error& e) {
-    std::cerr << "compare_hex_dominant: error: " << e.what() << "\n" << usage;
-    return 2;
-  } catch(const std::invalid_argument& e) {
-    std::cerr << "compare_hex_dominant: error: " << e.what() << "\n";
-    return 2;
-  } catch(const std::exception& e) {
-    std::cerr << "compare_hex_dominant: failed: " << e.what() << "\n";
-    return 1;
-  }
+  return vvm_benchmark::benchmark_main("compare_hex_dominant", usage, argc, argv, parse_command_line, run);
 }

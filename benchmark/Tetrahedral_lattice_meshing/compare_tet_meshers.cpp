@@ -11,15 +11,9 @@
 
 #include "compare_tet_meshers.h"
 
-#include <tbb/global_control.h>
-
-#include <cstdlib>
-#include <exception>
-#include <filesystem>
 #include <iostream>
-#include <memory>
-#include <sstream>
 #include <string>
+#include <vector>
 
 namespace vvm_tet_benchmark {
 
@@ -61,63 +55,22 @@ const char* usage =
     "                      (CGAL::Thickness_sizing_field_3); surfaces only\n"
     "  --verbose           progress of the particle rounds\n";
 
-using vvm_benchmark::parse_number;
-
 Options parse_command_line(int argc, char** argv)
 {
   Options o;
-  for(int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
-    auto value = [&]() -> std::string {
-      if(i + 1 >= argc) throw Input_error("option " + arg + " expects a value");
-      return argv[++i];
-    };
-    if(arg == "--vertices") {
-      const long n = parse_number<long>(arg, value());
-      if(n < 100 || n > 20000000) throw Input_error("--vertices must be between 100 and 2e7");
-      o.target_vertices = std::size_t(n);
-    } else if(arg == "--features-angle") {
-      o.features_angle = parse_number<double>(arg, value());
-      if(!(o.features_angle >= 0 && o.features_angle < 180)) throw Input_error("--features-angle must be in [0, 180)");
-    } else if(arg == "--sizing") {
-      o.sizing = value();
-      if(o.sizing != "uniform" && o.sizing != "thickness")
-        throw Input_error("unknown --sizing '" + o.sizing + "' (known: uniform, thickness)");
-    } else if(arg == "--field") {
-      o.field = value();
-    } else if(arg == "--methods") {
-      std::stringstream ss(value());
-      for(std::string m; std::getline(ss, m, ',');)
-        if(!m.empty()) o.methods.push_back(m);
-    } else if(arg == "--threads") {
-      o.threads = parse_number<int>(arg, value());
-      if(o.threads < 0) throw Input_error("--threads must be non-negative");
-    } else if(arg == "--json") {
-      o.json_file = value();
-    } else if(arg == "--out-dir") {
-      o.out_dir = value();
-    } else if(arg == "--seed") {
-      o.seed = parse_number<unsigned int>(arg, value());
-    } else if(arg == "--levels") {
-      o.levels = parse_number<int>(arg, value());
-      if(o.levels < 0 || o.levels > 6) throw Input_error("--levels must be in [0, 6]");
-    } else if(arg == "--sliver-bound") {
-      o.sliver_bound = parse_number<double>(arg, value());
+  vvm_benchmark::Command_line c(argc, argv, usage);
+  while(c.next()) {
+    if(c.is("--vertices")) o.target_vertices = c.number_in<std::size_t>(100, 20000000);
+    else if(c.is("--sizing")) o.sizing = c.one_of({"uniform", "thickness"});
+    else if(c.is("--field")) o.field = c.value();
+    else if(c.is("--methods")) o.methods = c.list();
+    else if(c.is("--levels")) o.levels = c.number_in<int>(0, 6);
+    else if(c.is("--sliver-bound")) {
+      o.sliver_bound = c.number<double>();
       if(!(o.sliver_bound >= 0 && o.sliver_bound < 70.5)) throw Input_error("--sliver-bound must be in [0, 70.5)");
-    } else if(arg == "--verbose") {
-      o.verbose = true;
-    } else if(arg == "--help" || arg == "-h") {
-      std::cout << usage;
-      std::exit(0);
-    } else if(!arg.empty() && arg[0] == '-') {
-      throw Input_error("unknown option " + arg);
-    } else if(o.input.empty()) {
-      o.input = arg;
-    } else {
-      throw Input_error("more than one INPUT given ('" + o.input + "', '" + arg + "')");
-    }
+    } else c.common(o);
   }
-  if(o.input.empty()) throw Input_error("no INPUT given");
+  vvm_benchmark::Command_line::require_input(o);
   const bool known_field = o.field == "identity" || o.field == "cross" || o.field == "rotation-y" ||
                            o.field == "fig4.8" || o.field == "fig4.9";
   if(!known_field) throw Input_error("unknown --field '" + o.field + "' (known: identity, cross, rotation-y, fig4.8, fig4.9)");
@@ -136,26 +89,9 @@ Options parse_command_line(int argc, char** argv)
 int main(int argc, char** argv)
 {
   using namespace vvm_tet_benchmark;
-  try {
-    const Options options = parse_command_line(argc, argv);
-    std::unique_ptr<tbb::global_control> threads;
-    if(options.threads > 0)
-      threads = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
-                                                      std::size_t(options.threads));
-    if(!options.out_dir.empty()) {
-      std::error_code error;
-      std::filesystem::create_directories(options.out_dir, error);
-      if(error) throw Input_error("cannot create '" + options.out_dir + "': " + error.message());
-    }
-    return is_implicit_domain_name(options.input) ? run_implicit_domain(options) : run_polyhedral_domain(options);
-  } catch(const Input_error& e) {
-    std::cerr << "compare_tet_meshers: error: " << e.what() << "\n" << usage;
-    return 2;
-  } catch(const std::invalid_argument& e) { // refused by a mesher: the input is at fault
-    std::cerr << "compare_tet_meshers: error: " << e.what() << "\n";
-    return 2;
-  } catch(const std::exception& e) {
-    std::cerr << "compare_tet_meshers: failed: " << e.what() << "\n";
-    return 1;
-  }
+  return vvm_benchmark::benchmark_main("compare_tet_meshers", usage, argc, argv, parse_command_line,
+                                       [](const Options& options) {
+                                         return is_implicit_domain_name(options.input) ? run_implicit_domain(options)
+                                                                                       : run_polyhedral_domain(options);
+                                       });
 }

@@ -8,7 +8,7 @@
 #ifndef VVM_BENCHMARK_COMPARE_TET_MESHERS_H
 #define VVM_BENCHMARK_COMPARE_TET_MESHERS_H
 
-#include "command_line.h" // from benchmark/GSM_mesh_optimization
+#include "command_line.h"
 
 #include <cstddef>
 #include <stdexcept>
@@ -17,21 +17,15 @@
 
 namespace vvm_tet_benchmark {
 
-struct Options
+// INPUT: a surface file, or cube / sphere / torus
+struct Options : vvm_benchmark::Common_options
 {
-  std::string input;                // a surface file, or cube / sphere / torus
   std::size_t target_vertices = 10000;
-  double features_angle = -1;       // < 0: not given (60 for the cube)
   std::string field = "identity";   // identity, cross, rotation-y, fig4.8, fig4.9
   std::string sizing = "uniform";   // uniform, thickness (the field's frames scaled by the thickness sizing)
   std::vector<std::string> methods; // empty: the default list
-  int threads = 0;
-  std::string json_file;
-  std::string out_dir;
-  unsigned int seed = 0;
   int levels = -1;                  // multiresolution levels; < 0: the package's choice
   double sliver_bound = 30;         // the lattice meshes' polishing bound (degrees; 0: none)
-  bool verbose = false;
 };
 
 // a user error (bad command line or input): printed with the usage, exit code 2

@@ -8,29 +8,18 @@
 #include "tet_mesher_comparison.h"
 
 #include "box_surface.h"
+#include "surface_input.h"
 #include "thickness_sizing.h"
 
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/GSM_mesh_optimization/IO/read_closed_surface.h>
-#include <CGAL/Mesh_complex_3_in_triangulation_3.h>
-#include <CGAL/Mesh_triangulation_3.h>
-#include <CGAL/Polygon_mesh_processing/distance.h>
-#include <CGAL/Polygon_mesh_processing/measure.h>
-#include <CGAL/Polyhedral_mesh_domain_with_features_3.h>
-#include <CGAL/Surface_mesh.h>
-#include <CGAL/facets_in_complex_3_to_triangle_mesh.h>
-
-#include <algorithm>
 #include <cmath>
 
 namespace vvm_tet_benchmark {
 namespace {
 
-typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
-typedef CGAL::Surface_mesh<K::Point_3> Surface_mesh;
-typedef CGAL::Polyhedral_mesh_domain_with_features_3<K, Surface_mesh> Domain;
-typedef CGAL::Mesh_triangulation_3<Domain, CGAL::Default, CGAL::Sequential_tag>::type Tr;
-typedef CGAL::Mesh_complex_3_in_triangulation_3<Tr, Domain::Corner_index, Domain::Curve_index> C3T3;
+typedef vvm_benchmark::K K;
+typedef vvm_benchmark::Surface_mesh Surface_mesh;
+typedef vvm_benchmark::Polyhedral_domain Domain;
+typedef vvm_benchmark::Polyhedral_c3t3 C3T3;
 namespace PMP = CGAL::Polygon_mesh_processing;
 
 } // namespace
@@ -46,24 +35,12 @@ int run_polyhedral_domain(const Options& options)
     surface = vvm_benchmark::box_surface<Surface_mesh>(lo, hi);
     volume = std::abs(PMP::volume(surface));
   } else {
-    try {
-      volume = GSM::IO::read_closed_surface(options.input, surface);
-    } catch(const std::invalid_argument& e) {
-      throw Input_error(e.what());
-    }
+    volume = vvm_benchmark::read_surface_input(options.input, surface);
   }
   Domain domain(surface);
   const double angle = options.features_angle >= 0 ? options.features_angle : (is_cube ? 60. : 0.);
   if(angle > 0) domain.detect_features(angle);
-  // two-sided, sampled on a grid of about 200,000 points on each surface (deterministic)
-  const double spacing = std::sqrt(PMP::area(surface) / 2e5);
-  auto distance = [&surface, spacing](const C3T3& c3t3) {
-    Surface_mesh boundary;
-    CGAL::facets_in_complex_3_to_triangle_mesh(c3t3, boundary);
-    const auto np = PMP::parameters::use_grid_sampling(true).grid_spacing(spacing);
-    return (std::max)(PMP::approximate_Hausdorff_distance<CGAL::Parallel_if_available_tag>(boundary, surface, np),
-                      PMP::approximate_Hausdorff_distance<CGAL::Parallel_if_available_tag>(surface, boundary, np));
-  };
+  const auto distance = vvm_benchmark::boundary_distance_to<C3T3>(surface);
   std::function<double(const K::Point_3&)> size;
   if(options.sizing == "thickness") {
     const auto sizing = vvm_benchmark::thickness_sizing<K>(surface, 3., 0.3, angle);

@@ -8,10 +8,9 @@
 #define VVM_BENCHMARK_TET_MESHER_COMPARISON_H
 
 #include "compare_tet_meshers.h"
-
-// make_mesh_3.h first: with CGAL_LINKED_WITH_TBB, CGAL 5.5.1's optimizer headers
-// rely on TBB headers that only the mesher includes.
-#include <CGAL/make_mesh_3.h>
+#include "json_lines.h"
+#include "mesh_3_optimizers.h"
+#include "table.h"
 
 #include <CGAL/Frame_fields/Closed_form_frame_field_3.h>
 #include <CGAL/Frame_fields/Scaled_frame_field_3.h>
@@ -27,11 +26,7 @@
 #include <CGAL/Mesh_criteria_3.h>
 #include <CGAL/Random.h>
 #include <CGAL/Real_timer.h>
-#include <CGAL/exude_mesh_3.h>
 #include <CGAL/gsm_optimize_mesh_3.h>
-#include <CGAL/lloyd_optimize_mesh_3.h>
-#include <CGAL/odt_optimize_mesh_3.h>
-#include <CGAL/perturb_mesh_3.h>
 
 #include <algorithm>
 #include <cmath>
@@ -53,14 +48,11 @@ namespace TLM = CGAL::Tetrahedral_lattice_meshing;
 // "make_mesh_3+odt+perturb" -> {"odt", "perturb"}; "bcc+gsm" -> {"bcc", "gsm"}
 inline std::vector<std::string> method_steps(const std::string& method)
 {
-  std::vector<std::string> steps;
-  std::stringstream ss(method);
-  for(std::string s; std::getline(ss, s, '+');) steps.push_back(s);
-  static const std::vector<std::string> optimizers{"lloyd", "odt", "perturb", "exude", "gsm"};
+  const std::vector<std::string> steps = vvm_benchmark::split(method, '+');
   const bool known_start = !steps.empty() && (steps[0] == "make_mesh_3" || steps[0] == "bcc" || steps[0] == "fcc");
   bool ok = known_start;
   for(std::size_t i = 1; ok && i < steps.size(); ++i)
-    ok = std::find(optimizers.begin(), optimizers.end(), steps[i]) != optimizers.end() &&
+    ok = (vvm_benchmark::is_mesh_3_optimizer(steps[i]) || steps[i] == "gsm") &&
          (steps[0] == "make_mesh_3" || (steps[i] == "gsm" && steps.size() == 2));
   if(known_start && steps[0] != "make_mesh_3" && steps.size() == 2 && steps[1] == "none") ok = true;
   if(!ok)
@@ -228,7 +220,7 @@ private:
         run.requested = std::size_t(std::llround(wanted));
         namespace TP = TLM::parameters;
         auto np = TP::lattice(type, TP::number_of_particles(run.requested, TP::number_of_threads(options_.threads,
-            TP::mesh_optimization(TLM::Lattice_mesh_optimization::NONE, TP::mesh_report(&run.report,
+            TP::mesh_optimization(TLM::Lattice_mesh_optimization::NONE, TP::report(&run.report,
                 CGAL::parameters::random_seed(options_.seed).verbose(options_.verbose))))));
         run.c3t3 = options_.levels < 0
                        ? CGAL::make_lattice_mesh_3<C3T3>(domain_, field_, np)
@@ -289,10 +281,7 @@ private:
     for(std::size_t i = 1; i < steps.size(); ++i) {
       CGAL::get_default_random() = CGAL::Random(options_.seed);
       const std::string& s = steps[i];
-      if(s == "lloyd") CGAL::lloyd_optimize_mesh_3(c3t3, domain_);
-      else if(s == "odt") CGAL::odt_optimize_mesh_3(c3t3, domain_);
-      else if(s == "perturb") CGAL::perturb_mesh_3(c3t3, domain_, P::sliver_bound = 0);
-      else if(s == "exude") CGAL::exude_mesh_3(c3t3, P::sliver_bound = 0);
+      if(vvm_benchmark::is_mesh_3_optimizer(s)) vvm_benchmark::run_mesh_3_optimizer(s, c3t3, domain_);
       else if(conformal_)
         CGAL::gsm_optimize_mesh_3(c3t3, domain_, GSM::parameters::number_of_threads(options_.threads));
       else
@@ -333,21 +322,26 @@ private:
                                                                             : -1.;
   }
 
+  static const vvm_benchmark::Table& table()
+  {
+    static const vvm_benchmark::Table t({{"method", 26, -1, true}, {"#V", 7}, {"#T", 7}, {"th_min", 6, 2},
+                                         {"mean", 6, 2}, {"th_max", 6, 2}, {"mean", 7, 2}, {"rho", 5, 3},
+                                         {"kappa", 5, 3}, {"eps", 6, 2}, {"<20", 5}, {"<40", 6}, {"inv", 4},
+                                         {"hd/hd0", 6, 3}, {"time_s", 8, 2}, {"part_s", 8, 2}});
+    return t;
+  }
+
   void print_line(const Method_result& r, bool header) const
   {
     const GSM::Mesh_quality_statistics& q = r.quality;
-    if(header)
-      std::printf("%-26s %7s %7s %13s %14s %5s %5s %6s %5s %6s %4s %6s %8s %8s\n", "method", "#V", "#T",
-                  "th_min/mean", "th_max/mean", "rho", "kappa", "eps", "<20", "<40", "inv", "hd/hd0", "time_s",
-                  "part_s");
-    char hd[16] = "-";
-    if(hausdorff_ratio(r) >= 0) std::snprintf(hd, sizeof hd, "%.3f", hausdorff_ratio(r));
-    std::printf("%-26s %7zu %7zu %6.2f/%6.2f %6.2f/%7.2f %5.3f %5.3f %6.2f %5zu %6zu %4zu %6s %8.2f %8.2f\n",
-                r.method.c_str(), q.number_of_vertices, q.number_of_cells, q.min_dihedral_angle,
-                q.mean_min_dihedral_angle, q.max_dihedral_angle, q.mean_max_dihedral_angle, q.mean_edge_radius_ratio,
-                q.mean_condition, r.alignment.mean, q.n_min_dihedral_below[1], q.n_min_dihedral_below[3],
-                q.number_of_inverted_cells, hd, r.time_s, r.particle_time_s);
-    std::fflush(stdout);
+    if(header) table().print_header();
+    table().print_row({r.method, q.number_of_vertices, q.number_of_cells, q.min_dihedral_angle,
+                       q.mean_min_dihedral_angle, q.max_dihedral_angle, q.mean_max_dihedral_angle,
+                       q.mean_edge_radius_ratio, q.mean_condition, r.alignment.mean, q.n_min_dihedral_below[1],
+                       q.n_min_dihedral_below[3], q.number_of_inverted_cells,
+                       hausdorff_ratio(r) >= 0 ? vvm_benchmark::Table::Cell(hausdorff_ratio(r))
+                                               : vvm_benchmark::Table::Cell::none(),
+                       r.time_s, r.particle_time_s});
   }
 
   void print_table(const std::vector<Method_result>& results) const
@@ -367,24 +361,23 @@ private:
 
   void write_json(const std::vector<Method_result>& results) const
   {
-    std::ofstream os(options_.json_file);
-    os.precision(17);
+    vvm_benchmark::Json_lines_file json(options_.json_file, vvm_benchmark::Json_lines_file::REPLACE);
     for(const Method_result& r : results) {
       const GSM::Mesh_quality_statistics& q = r.quality;
-      os << "{\"model\": \"" << model_ << "\", \"method\": \"" << r.method << "\", \"field\": \"" << options_.field
-         << "\", \"sizing\": \"" << options_.sizing << "\", \"n_vertices\": " << q.number_of_vertices << ", \"n_tets\": " << q.number_of_cells
-         << ", \"theta_min\": " << q.min_dihedral_angle << ", \"mean_min_dihedral\": " << q.mean_min_dihedral_angle
-         << ", \"theta_max\": " << q.max_dihedral_angle << ", \"mean_max_dihedral\": " << q.mean_max_dihedral_angle
-         << ", \"rho_mean\": " << q.mean_edge_radius_ratio << ", \"kappa_mean\": " << q.mean_condition
-         << ", \"alignment_error_mean_deg\": " << r.alignment.mean
-         << ", \"n_min_dih_lt20\": " << q.n_min_dihedral_below[1]
-         << ", \"n_min_dih_lt40\": " << q.n_min_dihedral_below[3] << ", \"n_inverted\": " << q.number_of_inverted_cells
-         << ", \"hausdorff\": " << r.boundary_distance << ", \"hausdorff_ratio\": " << hausdorff_ratio(r)
-         << ", \"time_s\": " << r.time_s << ", \"particle_time_s\": " << r.particle_time_s
-         << ", \"field_time_s\": " << field_time_s_ << ", \"particles_requested\": " << r.particles_requested
-         << ", \"threads\": " << options_.threads << ", \"sliver_bound\": " << options_.sliver_bound << "}\n";
+      json.write(vvm_benchmark::Json_line()
+                     .add("model", model_).add("method", r.method).add("field", options_.field)
+                     .add("sizing", options_.sizing).add("n_vertices", q.number_of_vertices)
+                     .add("n_tets", q.number_of_cells).add("theta_min", q.min_dihedral_angle)
+                     .add("mean_min_dihedral", q.mean_min_dihedral_angle).add("theta_max", q.max_dihedral_angle)
+                     .add("mean_max_dihedral", q.mean_max_dihedral_angle).add("rho_mean", q.mean_edge_radius_ratio)
+                     .add("kappa_mean", q.mean_condition).add("alignment_error_mean_deg", r.alignment.mean)
+                     .add("n_min_dih_lt20", q.n_min_dihedral_below[1]).add("n_min_dih_lt40", q.n_min_dihedral_below[3])
+                     .add("n_inverted", q.number_of_inverted_cells).add("hausdorff", r.boundary_distance)
+                     .add("hausdorff_ratio", hausdorff_ratio(r)).add("time_s", r.time_s)
+                     .add("particle_time_s", r.particle_time_s).add("field_time_s", field_time_s_)
+                     .add("particles_requested", r.particles_requested).add("threads", options_.threads)
+                     .add("sliver_bound", options_.sliver_bound));
     }
-    if(!os) throw std::runtime_error("cannot write '" + options_.json_file + "'");
   }
 
   struct Lattice_run

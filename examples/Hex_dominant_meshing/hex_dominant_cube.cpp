@@ -81,7 +81,7 @@ bool mesh_cube(const std::string& name, Surface_mesh sm, double volume, const Fr
 
   HDM::Hex_dominant_report r;
   auto run = [&](const auto& size_np) {
-    return CGAL::make_hex_dominant_mesh_3<C3T3>(domain, field, HDM::parameters::hex_dominant_report(&r, size_np));
+    return CGAL::make_hex_dominant_mesh_3<C3T3>(domain, field, HDM::parameters::report(&r, size_np));
   };
   Mesh mesh;
   try {

@@ -84,7 +84,7 @@ HDM::Hex_dominant_statistics mesh_tube(const std::string& name, const Domain& do
 {
   HDM::Hex_dominant_report r;
   const Mesh mesh = CGAL::make_hex_dominant_mesh_3<C3T3>(
-      domain, field, TLM::parameters::edge_length(edge_length, HDM::parameters::hex_dominant_report(&r)));
+      domain, field, TLM::parameters::edge_length(edge_length, HDM::parameters::report(&r)));
 
   // eq. 4.5 is measured in the field's space: pass the frame inverse B
   auto B = [&field](const Eigen::Vector3d& x) { return Eigen::Matrix3d(field.B(K::Point_3(x[0], x[1], x[2]))); };

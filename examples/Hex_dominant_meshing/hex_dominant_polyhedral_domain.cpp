@@ -68,7 +68,7 @@ int main(int argc, char** argv)
     const CGAL::Hex_dominant_mesh_3<K::Point_3> mesh = CGAL::make_hex_dominant_mesh_3<C3T3>(
         domain, TLM::parameters::number_of_particles(
                     particles, HDM::parameters::quality_bound(
-                                   0.5, HDM::parameters::hex_dominant_report(
+                                   0.5, HDM::parameters::report(
                                             &r, HDM::parameters::tetrahedral_mesh(&tets)))));
     const double total = timer.time();
 
@@ -96,7 +96,7 @@ int main(int argc, char** argv)
     // the same tets with no quality bound: more hexahedra, worse ones (H*_vol, Q*_SJ of Table 4.7)
     HDM::Hex_dominant_merge_report r0;
     const auto unbounded =
-        CGAL::tets_to_hex_dominant(tets, HDM::parameters::quality_bound(0., HDM::parameters::merge_report(&r0)));
+        CGAL::tets_to_hex_dominant(tets, HDM::parameters::quality_bound(0., HDM::parameters::report(&r0)));
     const HDM::Hex_dominant_statistics s0 = HDM::hex_dominant_statistics(unbounded, {}, &r0);
     std::printf("Q_bound 0: %zu hexahedra, H_vol %.2f%%, SJ min %.3f mean %.3f; %zu inverted cells, "
                 "%zu non-conforming faces\n",

@@ -86,7 +86,7 @@ int main(int argc, char** argv)
     for(double q_bound : {0., 0.5, 0.8}) {
       CGAL::Real_timer timer;
       timer.start();
-      mesh = CGAL::tets_to_hex_dominant(dt, HDM::parameters::quality_bound(q_bound, HDM::parameters::merge_report(&r)));
+      mesh = CGAL::tets_to_hex_dominant(dt, HDM::parameters::quality_bound(q_bound, HDM::parameters::report(&r)));
       char name[64];
       std::snprintf(name, sizeof(name), "Delaunay, Q_bound %.1f:", q_bound);
       ok &= report(name, mesh, r, timer.time());
@@ -106,7 +106,7 @@ int main(int argc, char** argv)
     const std::vector<std::array<std::size_t, 4>> tets = r.tets;
     HDM::Hex_dominant_merge_report r2;
     const Mesh same = CGAL::tets_to_hex_dominant(
-        mesh.points, tets, {}, HDM::parameters::quality_bound(0.8, HDM::parameters::merge_report(&r2)));
+        mesh.points, tets, {}, HDM::parameters::quality_bound(0.8, HDM::parameters::report(&r2)));
     ok &= report("index tets, Q_bound 0.8:", same, r2, r2.candidate_time + r2.selection_time);
     ok &= same.number_of_cells() == mesh.number_of_cells();
 
@@ -131,7 +131,7 @@ int main(int argc, char** argv)
     timer.start();
     HDM::Hex_dominant_merge_report r3;
     const Mesh mesh_of_ball =
-        CGAL::tets_to_hex_dominant(c3t3, HDM::parameters::quality_bound(0.5, HDM::parameters::merge_report(&r3)));
+        CGAL::tets_to_hex_dominant(c3t3, HDM::parameters::quality_bound(0.5, HDM::parameters::report(&r3)));
     ok &= report("make_mesh_3, Q_bound 0.5:", mesh_of_ball, r3, timer.time());
   } catch(const std::exception& e) {
     std::fprintf(stderr, "tets_to_hex_dominant: %s\n", e.what());

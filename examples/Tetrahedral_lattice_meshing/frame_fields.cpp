@@ -54,8 +54,8 @@ int main(int argc, char** argv)
       }
   CGAL::Delaunay_triangulation_3<K> dt(points.begin(), points.end());
   // the visitor shows the smoothing's progress: the energy after each L-BFGS round
-  const std::function<void(int, double)> progress = [](int round, double energy) {
-    std::cout << "  smoothing round " << round << ": energy " << energy << "\n";
+  const auto progress = [](const FF::Cross_field_round_report& r) {
+    std::cout << "  smoothing round " << r.round << ": energy " << r.energy << "\n";
   };
   const FF::Generated_cross_field_3<K> g = FF::generate_cross_field_3(
       dt, FF::parameters::features_angle(60, FF::parameters::axis_length(1. / 6, CGAL::parameters::visitor(progress))));

@@ -77,13 +77,13 @@ int main(int argc, char** argv)
   // BCC: l* = 2/16, 17^3 + 16^3 = 9009 particles on the lattice sites
   C3T3 bcc = CGAL::make_lattice_mesh_3<C3T3>(
       domain, identity,
-      TLM::parameters::lattice(TLM::Lattice_type::BCC, TLM::parameters::edge_length(2. / 16, TLM::parameters::mesh_report(&r))));
+      TLM::parameters::lattice(TLM::Lattice_type::BCC, TLM::parameters::edge_length(2. / 16, TLM::parameters::report(&r))));
   report("cube_bcc", bcc, identity, TLM::Lattice_type::BCC, r, isotropic, dir);
 
   // FCC: l* = 2/13, 14^3 + 3 * 13^2 * 14 = 9842 sites
   C3T3 fcc = CGAL::make_lattice_mesh_3<C3T3>(
       domain, identity,
-      TLM::parameters::lattice(TLM::Lattice_type::FCC, TLM::parameters::edge_length(2. / 13, TLM::parameters::mesh_report(&r))));
+      TLM::parameters::lattice(TLM::Lattice_type::FCC, TLM::parameters::edge_length(2. / 13, TLM::parameters::report(&r))));
   report("cube_fcc", fcc, identity, TLM::Lattice_type::FCC, r, isotropic, dir);
 
   return 0;

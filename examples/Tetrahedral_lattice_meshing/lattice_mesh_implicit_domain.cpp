@@ -49,7 +49,7 @@ int main(int argc, char** argv)
   // the particles, round by round
   auto progress = [](const TLM::Lattice_round_report& r) {
     std::printf("  level %d round %2d: %5zu particles (-%zu +%zu), energy per particle %.4f, %.2f s\n", r.level,
-                r.round, r.number_of_particles, r.number_deleted, r.number_inserted, r.energy, r.time);
+                r.round, r.number_of_particles, r.number_deleted, r.number_inserted, r.energy, r.elapsed_time);
   };
   const TLM::Lattice_particles_3<K::Point_3> particles =
       CGAL::lattice_particles_3(domain, field, TLM::parameters::number_of_particles(2400, P::visitor(progress)));
@@ -59,7 +59,7 @@ int main(int argc, char** argv)
   // the mesh: the same particles (same seed), connected, then GSM
   TLM::Lattice_mesh_report r;
   const C3T3 c3t3 =
-      CGAL::make_lattice_mesh_3<C3T3>(domain, field, TLM::parameters::number_of_particles(2400, TLM::parameters::mesh_report(&r)));
+      CGAL::make_lattice_mesh_3<C3T3>(domain, field, TLM::parameters::number_of_particles(2400, TLM::parameters::report(&r)));
   const auto q = CGAL::GSM_mesh_optimization::mesh_quality_statistics(c3t3);
   std::printf("torus: %zu tets, min dihedral %.2f (mean %.2f), %zu under 20 deg, %zu under 40 deg\n", q.number_of_cells,
               q.min_dihedral_angle, q.mean_min_dihedral_angle, q.n_min_dihedral_below[1], q.n_min_dihedral_below[3]);

@@ -56,7 +56,7 @@ int main(int argc, char** argv)
   TLM::Lattice_mesh_report r;
   try {
     const C3T3 c3t3 = CGAL::make_lattice_mesh_3<C3T3>(
-        domain, TLM::parameters::number_of_particles(particles, TLM::parameters::mesh_report(&r)));
+        domain, TLM::parameters::number_of_particles(particles, TLM::parameters::report(&r)));
     const auto q = CGAL::GSM_mesh_optimization::mesh_quality_statistics(c3t3);
     std::printf("%zu particles (l* = %.4g), %zu tets, %zu feature edges: min dihedral %.2f (mean %.2f), "
                 "%zu under 20 deg; particles %.2f s, mesh %.2f s, GSM %.2f s\n",

@@ -96,7 +96,7 @@ void test_cube_triangulations()
     classes.emplace(canonical(tets, symmetries), int(tets.size()));
 
     HDM::Hex_dominant_merge_report report;
-    const Mesh mesh = CGAL::tets_to_hex_dominant(tr, HDM::parameters::quality_bound(0., HDM::parameters::merge_report(&report)));
+    const Mesh mesh = CGAL::tets_to_hex_dominant(tr, HDM::parameters::quality_bound(0., HDM::parameters::report(&report)));
     // the points are numbered as met: find each one's cube corner
     std::vector<int> corner_of_point(mesh.points.size(), -1);
     for(auto v : tr.finite_vertex_handles())
@@ -176,7 +176,7 @@ void test_seven_tet_hexahedra()
       for(auto& t : sorted) std::sort(t.begin(), t.end());
       classes.insert(canonical(sorted, symmetries));
       HDM::Hex_dominant_merge_report report;
-      const Mesh mesh = CGAL::tets_to_hex_dominant(corners, indices, {}, HDM::parameters::quality_bound(0., HDM::parameters::merge_report(&report)));
+      const Mesh mesh = CGAL::tets_to_hex_dominant(corners, indices, {}, HDM::parameters::quality_bound(0., HDM::parameters::report(&report)));
       std::vector<int> corner_of_point(8);
       for(int c = 0; c < 8; ++c) corner_of_point[std::size_t(c)] = c;
       const bool one_hex = mesh.cells.size() == 1 && mesh.cells[0].type == CGAL::Hex_dominant_cell_type::HEXAHEDRON &&
@@ -278,7 +278,7 @@ void test_cubic_grid()
       for(int k = 0; k < n; ++k) points.emplace_back(0.5 * i, 0.5 * j, 0.5 * k);
   Delaunay tr(points.begin(), points.end());
   HDM::Hex_dominant_merge_report report;
-  const Mesh mesh = CGAL::tets_to_hex_dominant(tr, HDM::parameters::merge_report(&report, HDM::parameters::quality_bound(0.9)));
+  const Mesh mesh = CGAL::tets_to_hex_dominant(tr, HDM::parameters::report(&report, HDM::parameters::quality_bound(0.9)));
   const HDM::Hex_dominant_statistics s = HDM::hex_dominant_statistics(mesh);
   std::cout << "cubic grid " << n << "^3: " << report.number_of_tets << " tets, " << report.number_of_hexahedron_candidates
             << " hexahedron candidates -> " << s.number_of_hexahedra << " hexahedra, " << mesh.cells.size() - s.number_of_hexahedra
@@ -345,7 +345,7 @@ void test_random_tets()
     Delaunay tr(points.begin(), points.end());
     for(double q : {0., 0.5}) {
       HDM::Hex_dominant_merge_report report;
-      const Mesh mesh = CGAL::tets_to_hex_dominant(tr, HDM::parameters::quality_bound(q, HDM::parameters::merge_report(&report)));
+      const Mesh mesh = CGAL::tets_to_hex_dominant(tr, HDM::parameters::quality_bound(q, HDM::parameters::report(&report)));
       const HDM::Hex_dominant_statistics s = HDM::hex_dominant_statistics(mesh);
       std::cout << (round == 0 ? "random points" : "perturbed grid") << ", Q_bound " << q << ": " << report.number_of_tets
                 << " tets, candidates " << report.number_of_hexahedron_candidates << " hex / " << report.number_of_prism_candidates
@@ -376,7 +376,7 @@ void test_nonconforming_detected()
       for(int k = 0; k < 2; ++k) points.emplace_back(i, j, k);
   Delaunay tr(points.begin(), points.end());
   HDM::Hex_dominant_merge_report report;
-  Mesh mesh = CGAL::tets_to_hex_dominant(tr, HDM::parameters::merge_report(&report));
+  Mesh mesh = CGAL::tets_to_hex_dominant(tr, HDM::parameters::report(&report));
   VVM_CHECK(mesh.cells.size() == 2 && HDM::count_nonconforming_faces(mesh, report) == 0);
   if(mesh.cells.size() != 2) return;
   // a quarter turn of the second hexahedron's corner list about its 0-1 axis keeps it a
@@ -426,7 +426,7 @@ void test_metric_flips()
   for(auto c : tr.finite_cell_handles()) positive += tr.tetrahedron(c).orientation() == CGAL::POSITIVE;
   VVM_CHECK(positive == tr.number_of_finite_cells());
   HDM::Hex_dominant_merge_report report;
-  const Mesh mesh = CGAL::tets_to_hex_dominant(tr, HDM::parameters::frame_field(field, HDM::parameters::merge_report(&report)));
+  const Mesh mesh = CGAL::tets_to_hex_dominant(tr, HDM::parameters::frame_field(field, HDM::parameters::report(&report)));
   check_partition(mesh, report, tr, 0.02);
   // a second run finds nothing left to flip
   VVM_CHECK(flips.run(100000) == 0);

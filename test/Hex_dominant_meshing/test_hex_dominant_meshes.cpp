@@ -21,12 +21,12 @@ void test_make_hex_dominant_mesh_on_cube()
   Cube_domain domain(surface);
   domain.detect_features(60);
   HDM::Hex_dominant_report report;
-  std::vector<HDM::Hex_dominant_stage> stages;
+  std::vector<CGAL::VVM::Stage> stages; // the ends the visitor was told of
   const Mesh mesh = CGAL::make_hex_dominant_mesh_3<Cube_c3t3>(
       domain, Constant_field(),
-      TLM::parameters::edge_length(0.25, HDM::parameters::hex_dominant_report(&report,
-          HDM::parameters::stage_visitor([&](HDM::Hex_dominant_stage s, double) { stages.push_back(s); },
-              TLM::parameters::number_of_threads(2, CGAL::parameters::random_seed(3u))))));
+      TLM::parameters::edge_length(0.25, HDM::parameters::report(&report,
+          TLM::parameters::number_of_threads(2, CGAL::parameters::random_seed(3u).visitor(
+              [&](const CGAL::VVM::Stage_report& r) { if(r.stage_done) stages.push_back(r.stage); })))));
   const HDM::Hex_dominant_statistics s = HDM::hex_dominant_statistics(mesh, {}, &report.merge);
   std::cout << "make_hex_dominant_mesh_3, cube, l* 0.25: " << report.number_of_particles << " particles, "
             << report.merge.number_of_tets << " tets -> " << s.number_of_hexahedra << " hex, " << s.number_of_prisms
@@ -34,7 +34,8 @@ void test_make_hex_dominant_mesh_on_cube()
             << s.hexahedron_volume_percent << "%, SJ min/mean " << s.scaled_jacobian_min << "/" << s.scaled_jacobian_mean
             << ", volume " << s.total_volume << ", times " << report.particle_time << " + " << report.tetrahedra_time << " + "
             << report.merge_time << " s\n";
-  VVM_CHECK(stages.size() == 3 && stages[0] == HDM::Hex_dominant_stage::PARTICLES && stages[2] == HDM::Hex_dominant_stage::MERGING);
+  VVM_CHECK(stages == std::vector<CGAL::VVM::Stage>({CGAL::VVM::Stage::PARTICLES, CGAL::VVM::Stage::TETRAHEDRA,
+                                                     CGAL::VVM::Stage::MERGING}));
   VVM_CHECK(s.number_of_inverted_cells == 0 && s.number_of_nonconforming_faces == 0);
   VVM_CHECK(s.hexahedron_volume_percent > 90);
   VVM_CHECK(s.scaled_jacobian_min > 0.5);
@@ -64,7 +65,7 @@ void test_all_hex_cube_at_odd_layer_count()
   HDM::Hex_dominant_report report;
   const Mesh mesh = CGAL::make_hex_dominant_mesh_3<Cube_c3t3>(
       domain, Constant_field(),
-      TLM::parameters::number_of_particles(std::size_t(5832), HDM::parameters::hex_dominant_report(&report,
+      TLM::parameters::number_of_particles(std::size_t(5832), HDM::parameters::report(&report,
           TLM::parameters::number_of_threads(2))));
   const HDM::Hex_dominant_statistics s = HDM::hex_dominant_statistics(mesh, {}, &report.merge);
   std::cout << "make_hex_dominant_mesh_3, cube, 5832 particles asked: " << report.number_of_particles << " particles, "
@@ -100,7 +101,7 @@ void test_make_hex_dominant_mesh_on_warped_cube()
   HDM::Hex_dominant_report report;
   const Constant_field field(T);
   const Mesh mesh = CGAL::make_hex_dominant_mesh_3<Cube_c3t3>(
-      domain, field, TLM::parameters::edge_length(0.25, HDM::parameters::hex_dominant_report(&report,
+      domain, field, TLM::parameters::edge_length(0.25, HDM::parameters::report(&report,
           TLM::parameters::number_of_threads(2, CGAL::parameters::random_seed(1u)))));
   const HDM::Hex_dominant_statistics s = HDM::hex_dominant_statistics(
       mesh, [&](const Eigen::Vector3d&) { return field.B(Point_3(0, 0, 0)); }, &report.merge);
@@ -126,7 +127,7 @@ void test_flat_tet_on_boundary_quad()
     const std::vector<std::array<std::size_t, 4>> tets = {
         {{0, 1, 3, 7}}, {{0, 1, 5, 7}}, {{0, 2, 3, 7}}, {{0, 2, 6, 7}}, {{0, 4, 5, 7}}, {{0, 4, 6, 7}}, {{0, 1, 2, 3}}};
     HDM::Hex_dominant_merge_report report;
-    const Mesh mesh = CGAL::tets_to_hex_dominant(corners, tets, {}, HDM::parameters::quality_bound(0., HDM::parameters::merge_report(&report)));
+    const Mesh mesh = CGAL::tets_to_hex_dominant(corners, tets, {}, HDM::parameters::quality_bound(0., HDM::parameters::report(&report)));
     std::vector<int> corner_of_point(8);
     for(int c = 0; c < 8; ++c) corner_of_point[std::size_t(c)] = c;
     const HDM::Hex_dominant_statistics s = HDM::hex_dominant_statistics(mesh, nullptr, &report);
@@ -164,7 +165,7 @@ void test_make_hex_dominant_mesh_on_graded_cube()
   HDM::Hex_dominant_report report;
   const auto field = CGAL::Frame_fields::single_direction_anisotropy_frame_field<K>();
   const Mesh mesh = CGAL::make_hex_dominant_mesh_3<Cube_c3t3>(
-      domain, field, TLM::parameters::number_of_particles(800, HDM::parameters::hex_dominant_report(&report,
+      domain, field, TLM::parameters::number_of_particles(800, HDM::parameters::report(&report,
           TLM::parameters::number_of_threads(2, CGAL::parameters::random_seed(1u)))));
   const HDM::Hex_dominant_statistics s = HDM::hex_dominant_statistics(
       mesh, [&](const Eigen::Vector3d& x) { return Eigen::Matrix3d(field.B(Point_3(x[0], x[1], x[2]))); }, &report.merge);
@@ -247,7 +248,7 @@ void test_boundary_refinement()
     const double threshold = refine ? 0.5 * distance[0] : 0.;
     const Mesh mesh = CGAL::make_hex_dominant_mesh_3<Cube_c3t3>(
         domain, Constant_field(), TLM::parameters::edge_length(2.5, HDM::parameters::boundary_distance(threshold,
-            HDM::parameters::hex_dominant_report(&report, HDM::parameters::tetrahedral_mesh(&tets,
+            HDM::parameters::report(&report, HDM::parameters::tetrahedral_mesh(&tets,
                 TLM::parameters::number_of_threads(2, CGAL::parameters::random_seed(2u)))))));
     distance[refine] = boundary_facet_distance(tets, surface);
     const HDM::Hex_dominant_statistics s = HDM::hex_dominant_statistics(mesh, {}, &report.merge);

@@ -71,14 +71,6 @@ namespace {
 
 typedef TLMI::Particle_system<Constant_field, TLMI::No_boundary, Point> Free_system;
 
-// a < b, printing both on failure (false for NaN)
-inline bool check_less(double a, double b, const char* what, const char* file, int line)
-{
-  const bool ok = a < b;
-  if(!vvm_test::check(ok, what, file, line)) std::cerr.precision(15), std::cerr << "    got " << a << ", bound " << b << "\n";
-  return ok;
-}
-#define CHECK_LESS(a, b) check_less((a), (b), #a " < " #b, __FILE__, __LINE__)
 
 using vvm_test::throws_invalid_argument;
 

@@ -753,7 +753,7 @@ void test_ball_smoothing()
   std::vector<std::pair<int, double>> seen;
   const FF::Generated_cross_field_3<K> g = FF::generate_cross_field_3(
       dt, FF::parameters::smoothing_tolerance(1e-6, CGAL::parameters::visitor(
-              std::function<void(int, double)>([&](int round, double e) { seen.emplace_back(round, e); }))));
+              [&](const FF::Cross_field_round_report& r) { seen.emplace_back(r.round, r.energy); })));
   const FF::Boundary_alignment_statistics a = FF::boundary_alignment_statistics(g);
   bool increasing = false;
   for(std::size_t i = 1; i < g.round_energies.size(); ++i) increasing = increasing || g.round_energies[i] > g.round_energies[i - 1];

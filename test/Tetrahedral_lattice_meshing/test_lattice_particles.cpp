@@ -112,14 +112,14 @@ void test_particle_kinds_on_cube()
   VVM_CHECK_EQUAL(corners.size(), std::size_t(8));
   VVM_CHECK_EQUAL(corner_features.size(), std::size_t(8));
   VVM_CHECK_EQUAL(outside, std::size_t(0));
-  CHECK_LESS(worst_boundary, 1e-6);
-  CHECK_LESS(worst_edge, 1e-6);
-  CHECK_LESS(worst_corner, 1e-12);
+  VVM_CHECK_LESS(worst_boundary, 1e-6);
+  VVM_CHECK_LESS(worst_edge, 1e-6);
+  VVM_CHECK_LESS(worst_corner, 1e-12);
   VVM_CHECK_EQUAL(kinds_not_matching, std::size_t(0));
   // Alg. 2's projection: free particles stay further than 0.3 l* from the surface, boundary
   // particles further than 0.3 l* from the sharp edges (the cube's sampled boundary is exact)
-  CHECK_LESS(0.3 * l * (1 - 1e-9), smallest_free_margin);
-  CHECK_LESS(0.3 * l * (1 - 1e-9), closest_boundary_to_edge);
+  VVM_CHECK_LESS(0.3 * l * (1 - 1e-9), smallest_free_margin);
+  VVM_CHECK_LESS(0.3 * l * (1 - 1e-9), closest_boundary_to_edge);
   // one patch per face, one curve per edge
   VVM_CHECK_EQUAL(patch_of_face.size(), std::size_t(6));
   VVM_CHECK_EQUAL(patches.size(), std::size_t(6));
@@ -171,9 +171,9 @@ void test_particle_kinds_on_sphere()
             << "); largest free radius " << largest_free << "\n";
   VVM_CHECK(nb > 0 && nf > 0);
   VVM_CHECK_EQUAL(nb + nf, p.size()); // no sharp edge, no corner
-  CHECK_LESS(deepest, tolerance);
-  CHECK_LESS(highest, 1e-6);
-  CHECK_LESS(largest_free, 1 - 0.3 * p.edge_length + tolerance);
+  VVM_CHECK_LESS(deepest, tolerance);
+  VVM_CHECK_LESS(highest, 1e-6);
+  VVM_CHECK_LESS(largest_free, 1 - 0.3 * p.edge_length + tolerance);
 
   // its complex: every vertex of the boundary is a particle on the sphere (free particles left
   // on the boundary are put onto it), every cell has a neighbour in the complex (no cell hangs
@@ -183,7 +183,7 @@ void test_particle_kinds_on_sphere()
   TLM::Lattice_mesh_report r;
   const Sphere_c3t3 c3t3 = CGAL::make_lattice_mesh_3<Sphere_c3t3>(domain, Constant_field(),
       TLM::parameters::number_of_particles(wanted, TLM::parameters::mesh_optimization(
-          TLM::Lattice_mesh_optimization::NONE, TLM::parameters::mesh_report(&r, CGAL::parameters::random_seed(4u)))));
+          TLM::Lattice_mesh_optimization::NONE, TLM::parameters::report(&r, CGAL::parameters::random_seed(4u)))));
   double lowest_surface_vertex = 2, highest_surface_vertex = 0;
   for(auto f = c3t3.facets_in_complex_begin(); f != c3t3.facets_in_complex_end(); ++f)
     for(int k = 1; k <= 3; ++k) {
@@ -203,8 +203,8 @@ void test_particle_kinds_on_sphere()
             << "], " << r.number_of_projected_particles << " free particles put onto the surface, " << hanging
             << " hanging cells\n";
   VVM_CHECK(c3t3.number_of_facets_in_complex() > 0);
-  CHECK_LESS(1 - lowest_surface_vertex, tolerance);
-  CHECK_LESS(highest_surface_vertex - 1, 1e-6);
+  VVM_CHECK_LESS(1 - lowest_surface_vertex, tolerance);
+  VVM_CHECK_LESS(highest_surface_vertex - 1, 1e-6);
   VVM_CHECK_EQUAL(hanging, std::size_t(0));
 }
 
@@ -256,7 +256,7 @@ void test_polishing_bound()
   VVM_CHECK(std::equal(after_runs.begin(), after_runs.end(), fresh.begin(), fresh.end(),
                        [](const auto& a, const auto& b) { return a.first == b.first; }));
   VVM_CHECK(q30.n_min_dihedral_below[3] > 0);
-  CHECK_LESS(double(q50.n_min_dihedral_below[3]), double(q30.n_min_dihedral_below[3]));
+  VVM_CHECK_LESS(double(q50.n_min_dihedral_below[3]), double(q30.n_min_dihedral_below[3]));
   VVM_CHECK_EQUAL(q50.number_of_inverted_cells, std::size_t(0));
   VVM_CHECK(lifted.triangulation().tds().is_valid());
 
@@ -273,7 +273,7 @@ void test_polishing_bound()
             << q_unmoved.min_dihedral_angle << ", alignment error " << eps_moved << " / " << eps_unmoved << "\n";
   VVM_CHECK(q30.mean_min_dihedral_angle > q_unmoved.mean_min_dihedral_angle + 0.2);
   VVM_CHECK(q30.min_dihedral_angle >= (std::min)(q_unmoved.min_dihedral_angle, 30.) - 1e-9);
-  CHECK_LESS(eps_moved, eps_unmoved + 0.05);
+  VVM_CHECK_LESS(eps_moved, eps_unmoved + 0.05);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -488,7 +488,7 @@ void check_cube_complex(const Cube_c3t3& c3t3, const TLM::Lattice_mesh_report& r
   // seed 3), its volume within 1%
   VVM_CHECK_CLOSE(area, 24., 0.48);
   VVM_CHECK_CLOSE(volume, 8., 0.08);
-  CHECK_LESS(off_surface, 1e-6);
+  VVM_CHECK_LESS(off_surface, 1e-6);
   VVM_CHECK(c3t3.number_of_edges_in_complex() >= 12 * 4); // every cube edge is 2 / l* = 8 edges long
   VVM_CHECK_EQUAL(edge_off_curve, std::size_t(0));
   VVM_CHECK_EQUAL(c3t3.number_of_vertices_in_complex(), std::size_t(8));
@@ -501,7 +501,7 @@ void check_cube_complex(const Cube_c3t3& c3t3, const TLM::Lattice_mesh_report& r
   // particles can settle half a cell off the cube in one direction (a local minimum of the
   // energy with the corners fixed), and the Delaunay edges along a cube edge then zigzag
   // (seed 3 at l* 0.25: one cube edge covered to 0.125 of its length).
-  CHECK_LESS(0., least_covered);
+  VVM_CHECK_LESS(0., least_covered);
   VVM_CHECK_EQUAL(feature_edges_not_on_boundary, std::size_t(0));
   // Quality, measured over seeds 0-5 (this engine, l* 0.25, T = I, single level since the
   // lattice has under 4,000 particles): without GSM the smallest angle ranges from 1 to 15
@@ -510,13 +510,13 @@ void check_cube_complex(const Cube_c3t3& c3t3, const TLM::Lattice_mesh_report& r
   // smallest angle 56.1-57.4 (perfect BCC cells: 60; cells cut by a face: 45), 0.6-1.1%
   // under 30. GSM lifts the smallest angle to 28.4-30.2 degrees (its sliver bound is 30)
   // with at most 2 cells under 30 degrees.
-  CHECK_LESS(54., q.mean_min_dihedral_angle);
+  VVM_CHECK_LESS(54., q.mean_min_dihedral_angle);
   if(!gsm) {
-    CHECK_LESS(0.5, q.min_dihedral_angle); // no flat cell
-    CHECK_LESS(double(q.n_min_dihedral_below[2]), 0.02 * double(q.number_of_cells));
+    VVM_CHECK_LESS(0.5, q.min_dihedral_angle); // no flat cell
+    VVM_CHECK_LESS(double(q.n_min_dihedral_below[2]), 0.02 * double(q.number_of_cells));
   } else {
-    CHECK_LESS(25., q.min_dihedral_angle);
-    CHECK_LESS(double(q.n_min_dihedral_below[2]), 0.001 * double(q.number_of_cells));
+    VVM_CHECK_LESS(25., q.min_dihedral_angle);
+    VVM_CHECK_LESS(double(q.n_min_dihedral_below[2]), 0.001 * double(q.number_of_cells));
   }
 }
 
@@ -532,7 +532,7 @@ void test_lattice_mesh_on_cube()
       c3t3 = CGAL::make_lattice_mesh_3<Cube_c3t3>(domain, Constant_field(),
           TLM::parameters::edge_length(0.25,
               TLM::parameters::mesh_optimization(stage,
-                  TLM::parameters::mesh_report(&report, CGAL::parameters::random_seed(3u)))));
+                  TLM::parameters::report(&report, CGAL::parameters::random_seed(3u)))));
     } catch(const std::exception& e) {
       std::cerr << "    make_lattice_mesh_3 (stage " << int(stage) << ") threw: " << e.what() << "\n";
       VVM_CHECK(!"make_lattice_mesh_3 throws on the cube");
@@ -618,7 +618,7 @@ void test_lattice_mesh_in_stretched_field()
   const Cube_c3t3 c3t3 = CGAL::make_lattice_mesh_3<Cube_c3t3>(domain, field,
       TLM::parameters::lattice(TLM::Lattice_type::FCC, TLM::parameters::edge_length(0.25,
           TLM::parameters::mesh_optimization(TLM::Lattice_mesh_optimization::NONE,
-              TLM::parameters::mesh_report(&report, CGAL::parameters::random_seed(3u))))));
+              TLM::parameters::report(&report, CGAL::parameters::random_seed(3u))))));
   const Cube_tr& tr = c3t3.triangulation();
   const auto cp = tr.geom_traits().construct_point_3_object();
   auto mapped = [&](Cube_tr::Vertex_handle v) {
@@ -678,7 +678,7 @@ void test_lattice_mesh_in_stretched_field()
   TLM::Lattice_mesh_report stopped;
   const Cube_c3t3 first_round = CGAL::make_lattice_mesh_3<Cube_c3t3>(domain, field,
       TLM::parameters::lattice(TLM::Lattice_type::FCC, TLM::parameters::edge_length(0.25,
-          TLM::parameters::mesh_report(&stopped,
+          TLM::parameters::report(&stopped,
               CGAL::parameters::visitor([](const TLM::Lattice_round_report&) { return false; }).random_seed(3u)))));
   std::cout << "stopped by the visitor: " << first_round.number_of_cells_in_complex() << " cells, "
             << stopped.number_of_metric_flips << " metric flips\n";

@@ -14,11 +14,13 @@
 #include <CGAL/make_hex_dominant_mesh_3.h>
 #include <CGAL/make_lattice_mesh_3.h>
 #include <CGAL/Tetrahedral_lattice_meshing/internal/Domain_cross_field.h>
+#include <CGAL/VVM/Stage_report.h>
 
 #include <cmath>
 #include <fstream>
 #include <memory>
 #include <sstream>
+#include <type_traits>
 
 namespace vvm {
 namespace internal {
@@ -34,6 +36,31 @@ std::string particle_round_text(const TLM::Lattice_round_report& r)
   std::snprintf(text, sizeof text, "level %d round %d: %zu particles, energy %.4g", r.level, r.round,
                 r.number_of_particles, r.energy);
   return text;
+}
+
+std::string stage_end_text(const CGAL::VVM::Stage_report& r)
+{
+  typedef CGAL::VVM::Stage S;
+  const char* name = r.stage == S::FRAME_FIELD ? "cross field" : r.stage == S::PARTICLES ? "particles"
+                     : r.stage == S::TETRAHEDRA ? "tetrahedra" : r.stage == S::OPTIMIZATION ? "gsm rounds"
+                     : r.stage == S::POLISHING ? "gsm polishing" : "merging";
+  char text[160];
+  std::snprintf(text, sizeof text, "%s done at %.2f s", name, r.elapsed_time);
+  return text;
+}
+
+/// the progress lines of a lattice mesher: the particles' and GSM's rounds, and each stage's end
+auto progress_visitor(const Stage& stage)
+{
+  return [&stage](const auto& r) {
+    typedef std::decay_t<decltype(r)> Report;
+    if constexpr(std::is_same<Report, TLM::Lattice_round_report>::value) stage.report(particle_round_text(r));
+    else if constexpr(std::is_same<Report, CGAL::GSM_mesh_optimization::Round_report>::value)
+      stage.report(gsm_round_text(r));
+    else if constexpr(std::is_same<Report, CGAL::VVM::Stage_report>::value) {
+      if(r.stage_done) stage.report(stage_end_text(r));
+    }
+  };
 }
 
 /// calls `run(field)` with the field `name` names: identity, a frame-field file, or (cross)
@@ -77,11 +104,9 @@ Volume_mesh lattice_tet_mesh(const Surface_source& input, const Tet_options& o, 
   const Stage stage(progress, "lattice " + o.method);
   TLM::Lattice_mesh_report report;
   auto np = TLM::parameters::lattice(o.method == "bcc" ? TLM::Lattice_type::BCC : TLM::Lattice_type::FCC,
-                                     TLM::parameters::mesh_report(&report, TLM::parameters::number_of_threads(o.threads,
+                                     TLM::parameters::report(&report, TLM::parameters::number_of_threads(o.threads,
                                          CGAL::parameters::random_seed(o.seed).maximum_running_time(o.time_limit).visitor(
-                                             [&stage](const TLM::Lattice_round_report& rr) {
-                                               stage.report(particle_round_text(rr));
-                                             }))));
+                                             progress_visitor(stage)))));
   const auto sizing = relative_sizing(o.sizing, in);
   // the cross field's mesh about as fine as a BCC lattice of the requested count
   const double cross_size = o.size.size > 0 ? o.size.size : std::cbrt(2 * in.volume / double(o.size.vertices));
@@ -122,22 +147,13 @@ Volume_mesh hex_dominant_mesh(const Surface_source& input, const Hex_dominant_op
   internal::Surface_input in(input, o.features_angle);
   const internal::Stage stage(progress, "hexdom");
   CGAL::Hex_dominant_meshing::Hex_dominant_report hex_report;
-  auto np = internal::HDM::parameters::hex_dominant_report(&hex_report, internal::HDM::parameters::quality_bound(
+  auto np = internal::HDM::parameters::report(&hex_report, internal::HDM::parameters::quality_bound(
       o.quality_bound,
       internal::HDM::parameters::boundary_distance(
           o.boundary_distance,
-          internal::HDM::parameters::stage_visitor(
-              [&stage](CGAL::Hex_dominant_meshing::Hex_dominant_stage s, double seconds) {
-                const char* name = s == CGAL::Hex_dominant_meshing::Hex_dominant_stage::PARTICLES ? "particles"
-                                   : s == CGAL::Hex_dominant_meshing::Hex_dominant_stage::TETRAHEDRA ? "tetrahedra"
-                                                                                                     : "merging";
-                stage.report(std::string(name) + " done in " + std::to_string(seconds) + " s");
-              },
-              internal::TLM::parameters::number_of_threads(
-                  o.threads, CGAL::parameters::random_seed(o.seed).maximum_running_time(o.time_limit).visitor(
-                                 [&stage](const internal::TLM::Lattice_round_report& rr) {
-                                   stage.report(internal::particle_round_text(rr));
-                                 }))))));
+          internal::TLM::parameters::number_of_threads(
+              o.threads, CGAL::parameters::random_seed(o.seed).maximum_running_time(o.time_limit).visitor(
+                             internal::progress_visitor(stage))))));
   const auto sizing = internal::relative_sizing(o.sizing, in);
   const double cross_size = o.size.size > 0 ? o.size.size : std::cbrt(in.volume / double(o.size.vertices));
   Volume_mesh mesh = internal::with_field(o.field, sizing.get(), *in.domain, cross_size, o.time_limit, [&](const auto* field) {

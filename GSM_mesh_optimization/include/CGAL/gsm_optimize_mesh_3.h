@@ -19,7 +19,6 @@
 #include <CGAL/Mesh_optimization_return_code.h>
 #include <CGAL/Named_function_parameters.h>
 
-
 #include <array>
 #include <cmath>
 #include <functional>
@@ -32,6 +31,28 @@
 namespace CGAL {
 
 namespace GSM_mesh_optimization {
+
+/// \ingroup PkgGSMMeshOptimizationRef
+/// what `gsm_optimize_mesh_3()` did, for its `report` output
+struct Optimization_report
+{
+  int number_of_rounds = 0;           ///< rounds of vertex smoothing and flips
+  int number_of_polishing_rounds = 0; ///< polishing passes (the mean-angle moves included)
+  double energy = 0;                  ///< the mean energy of the cells after the last round
+  double min_dihedral_angle = 0;      ///< degrees, after the last round
+  /// cells whose smallest dihedral angle, in the metric, is under the sliver bound (30 degrees
+  /// if the bound is 0) after the last round
+  std::size_t number_of_cells_under_bound = 0;
+  std::size_t number_of_moves = 0;    ///< vertex moves, all rounds together
+  std::size_t number_of_flips = 0;    ///< flips (in polishing: edge removals and boundary peels)
+  std::size_t number_of_splits = 0;   ///< edges split (new vertices)
+  std::size_t number_of_removals = 0; ///< vertices removed
+  double time = 0;                    ///< seconds
+  Mesh_optimization_return_code return_code = MAX_ITERATION_NUMBER_REACHED;
+  bool time_limit_reached = false;    ///< `maximum_running_time` stopped it
+  bool stopped_by_visitor = false;    ///< the visitor returned `false`
+};
+
 namespace internal {
 
 template <class C3T3>
@@ -155,9 +176,31 @@ gsm_optimize(C3T3& c3t3, const MeshDomain* domain, bool boundary_fixed, const Na
 
   // the time limit counts from here: the metric's fitting is part of the run
   const VVM::internal::Time_limit time_limit(options.maximum_running_time);
+  // the visitor and the report see the rounds (set only if asked: the rounds' figures cost a pass)
   auto visitor = get_parameter(np, CGAL::internal_np::visitor);
-  if constexpr(!std::is_same<decltype(visitor), CGAL::internal_np::Param_not_found>::value)
-    options.visitor = [visitor](const GSM::Round_report& r) { return VVM::internal::visit(visitor, r); };
+  VVM::internal::check_visitor<decltype(visitor), GSM::Round_report>();
+  GSM::Optimization_report* report =
+      choose_parameter(get_parameter(np, VVM::internal_np::report), static_cast<GSM::Optimization_report*>(nullptr));
+  GSM::Optimization_report local_report;
+  GSM::Optimization_report& r = report ? *report : local_report;
+  r = GSM::Optimization_report();
+  if(report || VVM::internal::is_given(visitor))
+    options.visitor = [&visitor, &r](const GSM::Round_report& round) {
+      bool go = true;
+      if(round.is_polishing && r.number_of_polishing_rounds == 0) // the rounds are over
+        go = VVM::internal::visit_stage_end(visitor, VVM::Stage::OPTIMIZATION, r.number_of_rounds, round.elapsed_time);
+      ++(round.is_polishing ? r.number_of_polishing_rounds : r.number_of_rounds);
+      r.energy = round.energy;
+      r.min_dihedral_angle = round.min_dihedral_angle;
+      r.number_of_cells_under_bound = round.number_of_cells_under_bound;
+      r.number_of_moves += round.number_of_moves;
+      r.number_of_flips += round.number_of_flips;
+      r.number_of_splits += round.number_of_splits;
+      r.number_of_removals += round.number_of_removals;
+      go = VVM::internal::visit_report(visitor, round) && go;
+      if(!go) r.stopped_by_visitor = true;
+      return go;
+    };
 
   auto sizing = get_parameter(np, GSM::internal_np::sizing_field);
   auto metric_field = get_parameter(np, GSM::internal_np::metric_field);
@@ -194,7 +237,13 @@ gsm_optimize(C3T3& c3t3, const MeshDomain* domain, bool boundary_fixed, const Na
     optimizer.set_move_cost([cost](const typename C3T3::Triangulation::Vertex_handle& v, const Eigen::Vector3d& x) {
       return double(cost(v, x));
     });
-  return optimizer();
+  r.return_code = optimizer();
+  r.time = time_limit.elapsed();
+  r.time_limit_reached = r.return_code == TIME_LIMIT_REACHED;
+  if(!r.stopped_by_visitor)
+    VVM::internal::visit_stage_end(visitor, r.number_of_polishing_rounds ? VVM::Stage::POLISHING : VVM::Stage::OPTIMIZATION,
+                                   r.number_of_polishing_rounds ? r.number_of_polishing_rounds : r.number_of_rounds, r.time);
+  return r.return_code;
 }
 
 } // namespace internal
@@ -204,64 +253,26 @@ gsm_optimize(C3T3& c3t3, const MeshDomain* domain, bool boundary_fixed, const Na
 /*!
  * \ingroup PkgGSMMeshOptimizationRef
  *
- * optimizes the cells in the complex of `c3t3` by Gradient-based Shape Matching:
- * rounds of per-vertex Newton smoothing with a backtracking line search (in
- * parallel) and of flips (2-3, 3-2, 4-4, edge removal and multi-face removal),
- * each accepted only if it lowers the mean GSM energy
- * of the cells, so that the shape of every tetrahedron comes close to the
- * regular tetrahedron of the target size (dissertation ch. 3). Slivers have a
- * huge GSM energy, so they are removed first.
+ * optimizes the cells in the complex of `c3t3` by Gradient-based Shape Matching: rounds of
+ * Newton smoothing of the vertices (in parallel) and of flips, each kept only if it lowers the
+ * mean GSM energy of the cells, which brings every tetrahedron close to the regular tetrahedron
+ * of the target size; slivers, whose energy is huge, go first. A polishing stage then lifts the
+ * cells whose smallest dihedral angle is still under `sliver_bound`, by vertex moves, edge
+ * removals and, within a budget of 3% of the vertex count, edge splits paid for by vertex
+ * removals.
  *
- * The rounds stop when one lowers the mean energy by less than
- * `convergence_threshold`, or when two rounds in a row have neither raised the
- * smallest dihedral angle by 0.05 degree nor lowered the number of cells under
- * `sliver_bound` (30 degrees if it is 0) by a 20th: past that point the energy
- * creeps down while the worst cells stay as they are. Then a polishing stage lifts the cells whose
- * smallest dihedral angle is still under `sliver_bound` (typically next to the
- * surface, where vertices only slide). The worst of them, a 200th of the cells
- * at most, are lifted whatever it costs: their vertices move up the gradient of
- * the smallest angle of their star. The vertices of the others move, and edges
- * around them are removed, only when that lowers the sum over the cells touched of
- * a penalty of each cell's smallest angle, `(sliver_bound + 30 - q)^4` under
- * `sliver_bound + 30` degrees, so that a
- * steeply graded or thin-walled mesh with thousands of cells under the bound does
- * not trade its bulk for them. If that is not enough, one interior edge of a cell
- * is split by a new interior vertex when that raises the smallest angle around
- * the edge (and, for the cells that are not the worst, lowers the penalty), or else
- * one of its surface edges by a new vertex on the domain's surface (when its
- * facets stay faithful to it), adding at most 3% of the vertex count; past that, interior vertices whose removal (an
- * edge collapse) leaves only cells 5 degrees over the bound are removed, each paying
- * for one more split (at most 3% of the vertex count). A surface vertex (not on a feature curve
- * or a patch border) goes by edge collapse into a neighbour on its patch when that raises the
- * smallest angle of its star and lowers its penalty, with the new facets and the vertex's point
- * as near each other and the surface as the boundary may be; the first pass tries every surface
- * vertex, the later ones those of the cells under the bound, and each removal pays for one more
- * split, so the result may have fewer vertices than the input. Polishing trades a little energy (the new
- * cells are smaller than the target) for the worst angles; `split_edges(false)`
- * keeps the vertex set, `sliver_bound(0)` skips the stage. Its passes stop when
- * two in a row have neither raised the smallest angle by half a degree nor
- * lowered the number of cells under the bound by a 50th (on a mesh that cannot
- * reach the bound, each further pass would gain a tenth of a degree).
+ * This is meant as the last stage after `make_mesh_3()`, in place of `perturb_mesh_3()` and
+ * `exude_mesh_3()`. Surface vertices stay on their surface patch, feature-curve vertices on
+ * their curve, corners do not move, and the boundary stays about as close to the domain's
+ * surface as the input's; no cell is inverted, no flip crosses a surface, feature edge or
+ * subdomain boundary, and subdomain and patch indices are kept.
+ * The manual, \ref Chapter_GSM_mesh_optimization, describes the method, the stopping rules and
+ * when to use which option.
  *
- * It is meant as the final stage after `make_mesh_3()` (with or without Lloyd or
- * ODT), in place of `perturb_mesh_3()` and `exude_mesh_3()`. Vertex moves and
- * flips do not keep the triangulation regular (weighted Delaunay): nothing that
- * needs a regular triangulation (`refine_mesh_3()`, `perturb_mesh_3()`,
- * `exude_mesh_3()`) may run after it.
- *
- * Interior vertices move freely; surface vertices (`in_dimension() == 2`) move
- * in their tangent plane and are projected back onto the domain's surface
- * (`MeshDomain::Construct_intersection` along the normal; an AABB tree for the
- * polyhedral domains), staying on their surface patch; vertices on feature
- * curves move along the curve (`construct_point_on_curve()`); corners never
- * move. A boundary vertex moves only where its surface facets stray from the
- * surface (measured along their normals with `Construct_intersection` and
- * `Do_intersect_surface`) no
- * further than the initial mesh's facets around it did, or than most of them,
- * so that the boundary stays about as close to the surface. No cell is ever
- * inverted. Flips never cross a surface facet, a feature edge or a subdomain
- * boundary; subdomain and surface-patch indices and the complex's counters are
- * kept.
+ * \pre `c3t3` was made from `domain` (by `make_mesh_3()`, or by
+ *   `GSM_mesh_optimization::Complex_from_tetrahedra_3`).
+ * \warning The triangulation is no longer regular (weighted Delaunay) afterwards: nothing that
+ *   needs one (`refine_mesh_3()`, `perturb_mesh_3()`, `exude_mesh_3()`) may run after it.
  *
  * \tparam C3T3 a `Mesh_complex_3_in_triangulation_3`
  * \tparam MeshDomain a model of `MeshDomain_3` (or `MeshDomainWithFeatures_3`)
@@ -284,8 +295,8 @@ gsm_optimize(C3T3& c3t3, const MeshDomain* domain, bool boundary_fixed, const Na
  *     \cgalParamDefault{0}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{GSM_mesh_optimization::parameters::convergence_threshold}
- *     \cgalParamDescription{stop when a round lowers the mean energy by less than this fraction
- *       (the rounds also stop when the worst cells stop improving, see above)}
+ *     \cgalParamDescription{the rounds stop when one lowers the mean energy by less than this
+ *       fraction (or when the worst cells stop improving)}
  *     \cgalParamType{double}
  *     \cgalParamDefault{1e-4}
  *   \cgalParamNEnd
@@ -301,11 +312,9 @@ gsm_optimize(C3T3& c3t3, const MeshDomain* domain, bool boundary_fixed, const Na
  *     \cgalParamDefault{false}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{GSM_mesh_optimization::parameters::boundary_distance}
- *     \cgalParamDescription{how far a boundary facet may stray from the domain's surface at least
- *       (measured along its normal). By default a facet may stray as far as the input mesh's
- *       facets did: a mesh made by `make_mesh_3()` keeps its `facet_distance`, and a mesh whose
- *       boundary lies on the surface (`Complex_from_tetrahedra_3`) keeps it there, its boundary
- *       vertices sliding on flat parts only. A positive distance lets them slide on curved parts}
+ *     \cgalParamDescription{how far a boundary facet may stray from the domain's surface at
+ *       least, along its normal; 0: as far as the input's facets did. A positive distance frees
+ *       the boundary vertices of a mesh whose boundary lies on the surface}
  *     \cgalParamType{`double`, non-negative}
  *     \cgalParamDefault{0}
  *   \cgalParamNEnd
@@ -322,72 +331,46 @@ gsm_optimize(C3T3& c3t3, const MeshDomain* domain, bool boundary_fixed, const Na
  *     \cgalParamDefault{true}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{GSM_mesh_optimization::parameters::split_edges}
- *     \cgalParamDescription{whether the polishing may split interior edges of the cells under the
- *       sliver bound, adding interior vertices, and then their surface edges, adding surface
- *       vertices on the domain's surface (at most 3% of the vertex count net: past that,
- *       interior vertices where the cells stay good are removed to pay for more), and remove
- *       surface vertices by edge collapse where that lifts their star; `false`
- *       keeps the vertex set}
+ *     \cgalParamDescription{whether the polishing may add and remove vertices (edge splits and
+ *       collapses, at most 3% of the vertex count net); `false` keeps the vertex set}
  *     \cgalParamType{bool}
  *     \cgalParamDefault{true}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{GSM_mesh_optimization::parameters::shortest_polishing_moves}
- *     \cgalParamDescription{if `true`, the polishing lifts a cell under the sliver bound by the
- *       shortest move of one of its vertices that takes the vertex's star to the bound (else by the
- *       move that lifts it most), and prefers moves that put no more of the star's cells under the
- *       bound + 10 degrees: the vertices move less, and fewer cells go under 40 degrees, for
- *       meshes whose vertex positions matter (`make_lattice_mesh_3()` sets it, to keep its
- *       vertices on the lattice: on fandisk's BCC mesh at 18,000 vertices, alignment error 3.46
- *       against 3.54 degrees, 1,688 tets under 40 against 1,855). On `make_mesh_3()` meshes it
- *       leaves more cells just under the bound (elephant at 10,000: 109 under 30 against 65)}
+ *     \cgalParamDescription{if `true`, the polishing moves a vertex by the shortest step that
+ *       lifts its star to the bound: for meshes whose vertex positions matter, such as lattice
+ *       meshes (`make_lattice_mesh_3()` sets it)}
  *     \cgalParamType{bool}
  *     \cgalParamDefault{false}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{GSM_mesh_optimization::parameters::mean_angle_threshold}
- *     \cgalParamDescription{if positive, after the polishing, passes of moves of the vertices of the
- *       cells whose smallest dihedral angle is under this many degrees: each goes up the gradient
- *       of the sum of its star's smallest angles (less its `vertex_move_cost`) when that raises the
- *       sum without taking the star's worst cell under `sliver_bound` or putting more of its cells
- *       under `sliver_bound` + 10 degrees; the passes stop when one moves nothing (at most 10).
- *       They raise the mean smallest angle where the GSM energy's regular template does not fit,
- *       such as the boundary layer of a lattice mesh (`make_lattice_mesh_3()` sets 60). Not run
- *       when `sliver_bound` is 0}
+ *     \cgalParamDescription{if positive, after the polishing, the vertices of the cells under this
+ *       many degrees move to raise the sum of their star's smallest angles (less
+ *       `vertex_move_cost`); 0, or a `sliver_bound` of 0, skips these moves}
  *     \cgalParamType{double}
  *     \cgalParamDefault{0}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{GSM_mesh_optimization::parameters::vertex_move_cost}
- *     \cgalParamDescription{what a vertex costs at a position, in degrees of its star's smallest
- *       angles, for the moves of `mean_angle_threshold` only (`make_lattice_mesh_3()`: the alignment
- *       error of its edges, so that vertices stay on the lattice unless moving pays). Called
- *       sequentially, while only the vertex asked about moves}
+ *     \cgalParamDescription{what a vertex costs at a position, in degrees, for the moves of
+ *       `mean_angle_threshold` only; called sequentially}
  *     \cgalParamType{a callable `double(C3T3::Triangulation::Vertex_handle, const Eigen::Vector3d&)`}
  *     \cgalParamDefault{no cost}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{GSM_mesh_optimization::parameters::sizing_field}
- *     \cgalParamDescription{the relative target edge length `h(p)` (adaptive meshing): each vertex
- *       takes `h` where it is (again each time it moves), and a cell is measured after scaling by
- *       `1/h` for the mean `h` of its vertices. Only the variation of `h` matters: it is multiplied by the
- *       constant that makes its target edges fit the number of vertices of the mesh (eq. 3.21
- *       measured with `h`), so a field proportional to the one given to `make_mesh_3()` is fine.
- *       It is called from several threads at once.}
+ *     \cgalParamDescription{the relative target edge length `h(p)`; only its variation matters
+ *       (it is scaled to fit the vertex count). Called from several threads at once}
  *     \cgalParamType{a callable `double(const Eigen::Vector3d&)`, positive and finite}
- *     \cgalParamDefault{the input mesh's local size: at each vertex the mean length of its edges,
- *       averaged with its neighbours', interpolated linearly between the input vertices (so that
- *       a vertex that moves takes the size of where it goes); so a
- *       graded mesh (from `facet_distance`, a sizing criterion, small features) keeps its grading}
+ *     \cgalParamDefault{the input mesh's local edge length, so that a graded mesh keeps its grading}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{GSM_mesh_optimization::parameters::uniform_sizing}
  *     \cgalParamDescription{if `true` and no sizing or metric field is given, one target edge
- *       length for the whole mesh, estimated from its volume, boundary area and vertex count
- *       (eq. 3.21), instead of the input mesh's local size}
+ *       length for the whole mesh instead of the input mesh's local size}
  *     \cgalParamType{bool}
  *     \cgalParamDefault{false}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{GSM_mesh_optimization::parameters::metric_field}
- *     \cgalParamDescription{an anisotropic metric `M(p)`: cells are measured after mapping by
- *       `M^{1/2}`, so the target tetrahedron is regular in the metric. As for `sizing_field`,
- *       `M` is scaled by one constant so that its target edges fit the vertex count. It is called
- *       from several threads at once.}
+ *     \cgalParamDescription{an anisotropic metric `M(p)`: the target tetrahedron is regular in
+ *       the metric (scaled to fit the vertex count). Called from several threads at once}
  *     \cgalParamType{a callable `Eigen::Matrix3d(const Eigen::Vector3d&)`, symmetric positive definite}
  *     \cgalParamDefault{isotropic}
  *   \cgalParamNEnd
@@ -404,12 +387,16 @@ gsm_optimize(C3T3& c3t3, const MeshDomain* domain, bool boundary_fixed, const Na
  *   \cgalParamNEnd
  *   \cgalParamNBegin{visitor}
  *     \cgalParamDescription{called after each round, and each polishing round, with its
- *       `GSM_mesh_optimization::Round_report` (mean energy, min dihedral angle, cells under the
- *       sliver bound, moves, flips,
- *       splits, time); if it returns `false`, the optimization stops there, as at the round
- *       limit (`MAX_ITERATION_NUMBER_REACHED`)}
- *     \cgalParamType{a callable `void(const GSM_mesh_optimization::Round_report&)` or
- *       `bool(const GSM_mesh_optimization::Round_report&)`}
+ *       `GSM_mesh_optimization::Round_report`, and at the end of the rounds and of the
+ *       polishing with a `VVM::Stage_report`; returning `false` stops the optimization
+ *       (`MAX_ITERATION_NUMBER_REACHED`)}
+ *     \cgalParamType{a callable taking `const VVM::Stage_report&` or
+ *       `const GSM_mesh_optimization::Round_report&`, returning `void` or `bool`}
+ *     \cgalParamDefault{none}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{GSM_mesh_optimization::parameters::report}
+ *     \cgalParamDescription{receives what the optimization did}
+ *     \cgalParamType{`GSM_mesh_optimization::Optimization_report*`}
  *     \cgalParamDefault{none}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{verbose}
@@ -426,6 +413,8 @@ gsm_optimize(C3T3& c3t3, const MeshDomain* domain, bool boundary_fixed, const Na
  *   cell, a vertex has a non-finite coordinate, a cell is inverted or flat, both a
  *   sizing field and a metric field are given, or the field is not positive
  *   (definite) and finite at a cell of the mesh.
+ *
+ * \sa `gsm_optimize_triangulation_3()`, `GSM_mesh_optimization::mesh_quality_statistics()`
  */
 template <class C3T3, class MeshDomain, class NamedParameters = parameters::Default_named_parameters>
 Mesh_optimization_return_code

@@ -28,7 +28,8 @@ namespace CGAL {
 namespace Hex_dominant_meshing {
 
 /// \ingroup PkgHexDominantMeshingRef
-/// the stages of `make_hex_dominant_mesh_3()`, as its stage visitor sees them
+/// the stages of `make_hex_dominant_mesh_3()`, as its deprecated `stage_visitor` sees them
+/// (the `visitor` sees them as `VVM::Stage`)
 enum class Hex_dominant_stage
 {
   PARTICLES,   ///< the cubic-lattice particles are placed
@@ -37,7 +38,7 @@ enum class Hex_dominant_stage
 };
 
 /// \ingroup PkgHexDominantMeshingRef
-/// what `make_hex_dominant_mesh_3()` did, for its `hex_dominant_report` output
+/// what `make_hex_dominant_mesh_3()` did, for its `report` output
 struct Hex_dominant_report
 {
   std::size_t number_of_particles = 0;
@@ -67,19 +68,22 @@ make_hex_dominant_mesh(const MeshDomain& domain, const FrameField& field, const 
   namespace HDM = Hex_dominant_meshing;
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
-  HDM::Hex_dominant_report* report = choose_parameter(get_parameter(np, HDM::internal_np::hex_dominant_report),
+  HDM::Hex_dominant_report* report = choose_parameter(get_parameter(np, VVM::internal_np::report),
                                                       static_cast<HDM::Hex_dominant_report*>(nullptr));
   HDM::Hex_dominant_report local;
   HDM::Hex_dominant_report& r = report ? *report : local;
   r = HDM::Hex_dominant_report();
   const VVM::internal::Time_limit time_limit(request.options.maximum_running_time);
-  auto v = get_parameter(np, HDM::internal_np::stage_visitor);
-  // false: the visitor asks to stop
-  auto visit_stage = [&](HDM::Hex_dominant_stage s, double t) {
+  auto visitor = get_parameter(np, CGAL::internal_np::visitor);
+  VVM::internal::check_visitor<decltype(visitor), Tetrahedral_lattice_meshing::Lattice_round_report>();
+  auto v = get_parameter(np, HDM::internal_np::stage_visitor); // deprecated
+  // the end of a stage, for the visitor (not after a stop) and the stage visitor (after
+  // each stage, as it always was); false: one asks to stop
+  auto visit_stage = [&](HDM::Hex_dominant_stage s, VVM::Stage stage, int rounds, double t, bool stopped) {
+    bool go = stopped || VVM::internal::visit_stage_end(visitor, stage, rounds, time_limit.elapsed());
     if constexpr(!std::is_same<decltype(v), CGAL::internal_np::Param_not_found>::value)
-      return VVM::internal::visit(v, s, t);
-    else
-      return true;
+      go = VVM::internal::visit(v, s, t) && go;
+    return go;
   };
 
   VVM::internal::Lattice_tetrahedralization_options options;
@@ -91,12 +95,14 @@ make_hex_dominant_mesh(const MeshDomain& domain, const FrameField& field, const 
   const VVM::internal::Lattice_tetrahedralization<MeshDomain> t = VVM::internal::lattice_tetrahedralization(
       c3t3, domain, field, request, time_limit, options,
       [&](const VVM::internal::Lattice_tetrahedralization_report& tr) {
-        return visit_stage(HDM::Hex_dominant_stage::PARTICLES, tr.particle_time);
+        return visit_stage(HDM::Hex_dominant_stage::PARTICLES, VVM::Stage::PARTICLES, tr.number_of_particle_rounds,
+                           tr.particle_time, tr.stopped_by_visitor);
       });
   VVM::internal::copy_shared_fields(t.report, r);
   r.tetrahedra_time = t.report.connection_time;
   r.number_of_boundary_points = t.report.number_of_boundary_points;
-  if(!visit_stage(HDM::Hex_dominant_stage::TETRAHEDRA, r.tetrahedra_time)) r.stopped_by_visitor = true;
+  if(!visit_stage(HDM::Hex_dominant_stage::TETRAHEDRA, VVM::Stage::TETRAHEDRA, 0, r.tetrahedra_time, r.stopped_by_visitor))
+    r.stopped_by_visitor = true;
   // read from the merging's threads: no write to `r` here
   const std::function<bool()> must_stop = [&]() { return r.stopped_by_visitor || time_limit.is_reached(); };
 
@@ -107,11 +113,12 @@ make_hex_dominant_mesh(const MeshDomain& domain, const FrameField& field, const 
   indexed_tets(c3t3, adjacency, points);
   // the merging's own time limit is the whole call's (`must_stop`)
   auto mesh = merge_tets(adjacency, std::move(points),
-                         HDM::parameters::frame_field(std::cref(field), HDM::parameters::merge_report(&r.merge, np)),
+                         HDM::parameters::frame_field(std::cref(field), HDM::parameters::report(&r.merge, np)),
                          must_stop);
   if(r.merge.stopped && !r.stopped_by_visitor) r.time_limit_reached = true;
   r.merge_time = timer.time();
-  if(!visit_stage(HDM::Hex_dominant_stage::MERGING, r.merge_time)) r.stopped_by_visitor = true;
+  if(!visit_stage(HDM::Hex_dominant_stage::MERGING, VVM::Stage::MERGING, 0, r.merge_time, r.stopped_by_visitor))
+    r.stopped_by_visitor = true;
   C3T3* tets = choose_parameter(get_parameter(np, HDM::internal_np::tetrahedral_mesh), static_cast<C3T3*>(nullptr));
   if(tets) *tets = std::move(c3t3);
   return mesh;
@@ -157,8 +164,7 @@ VVM::internal::Lattice_request read_hex_dominant_request(const NamedParameters& 
  * \cgalNamedParamsBegin
  *   \cgalParamNBegin{the named parameters of `lattice_particles_3()`}
  *     \cgalParamDescription{`edge_length` or `number_of_particles`, `random_seed`,
- *       `number_of_threads`, `maximum_running_time` (see below), the particle rounds'
- *       `visitor`, ...; the lattice is the cubic one}
+ *       `number_of_threads`, `maximum_running_time` (see below), ...; the lattice is the cubic one}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{the named parameters of `tets_to_hex_dominant()`}
  *     \cgalParamDescription{`quality_bound`, `cell_types`}
@@ -172,18 +178,21 @@ VVM::internal::Lattice_request read_hex_dominant_request(const NamedParameters& 
  *       hexahedra: the refinement trades hexahedra near the boundary for a closer boundary}
  *     \cgalParamType{`double`} \cgalParamDefault{0: no refinement}
  *   \cgalParamNEnd
- *   \cgalParamNBegin{Hex_dominant_meshing::parameters::stage_visitor}
- *     \cgalParamDescription{called after each stage with the stage and its seconds; if it returns
- *       `false`, the stages after it do only what a valid mesh needs (see below)}
- *     \cgalParamType{a callable `void(Hex_dominant_meshing::Hex_dominant_stage, double)` or
- *       `bool(Hex_dominant_meshing::Hex_dominant_stage, double)`} \cgalParamDefault{none}
+ *   \cgalParamNBegin{visitor}
+ *     \cgalParamDescription{called with the particles' rounds
+ *       (`Tetrahedral_lattice_meshing::Lattice_round_report`) and each stage's end
+ *       (`VVM::Stage_report`: `PARTICLES`, `TETRAHEDRA`, `MERGING`); if it returns `false`, the
+ *       stages after it do only what a valid mesh needs (see below)}
+ *     \cgalParamType{a callable taking `const VVM::Stage_report&` or
+ *       `const Tetrahedral_lattice_meshing::Lattice_round_report&`, returning `void` or `bool`}
+ *     \cgalParamDefault{none}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{Hex_dominant_meshing::parameters::tetrahedral_mesh}
  *     \cgalParamDescription{receives the tets that were merged (e.g. to merge them again with
  *       another quality bound by `tets_to_hex_dominant()`)}
  *     \cgalParamType{`C3T3*`} \cgalParamDefault{none}
  *   \cgalParamNEnd
- *   \cgalParamNBegin{Hex_dominant_meshing::parameters::hex_dominant_report}
+ *   \cgalParamNBegin{Hex_dominant_meshing::parameters::report}
  *     \cgalParamDescription{receives the counts and times of each stage}
  *     \cgalParamType{`Hex_dominant_meshing::Hex_dominant_report*`} \cgalParamDefault{none}
  *   \cgalParamNEnd
@@ -195,8 +204,9 @@ VVM::internal::Lattice_request read_hex_dominant_request(const NamedParameters& 
  * not merged stay tetrahedra (`Hex_dominant_report::time_limit_reached`). The stages without
  * which there is no mesh always run: the boundary's sampling, the first particles and their
  * connection into tets (and, in the overload without a field, the cross field's mesh and
- * least-squares solve). A visitor that returns `false` (the particle rounds' `visitor` or the
- * `stage_visitor`) stops the same way (`Hex_dominant_report::stopped_by_visitor`).
+ * least-squares solve). A visitor that returns `false` stops the same way
+ * (`Hex_dominant_report::stopped_by_visitor`). The former `stage_visitor`, called as
+ * `stage_visitor(Hex_dominant_stage, seconds)`, still works but is deprecated.
  *
  * \throw std::invalid_argument before any work on bad input (as `lattice_particles_3()`:
  *   empty domain, bad sizes or counts, degenerate field; a lattice other than cubic; a quality

@@ -37,7 +37,7 @@ namespace CGAL {
 namespace Hex_dominant_meshing {
 
 /// \ingroup PkgHexDominantMeshingRef
-/// what `tets_to_hex_dominant()` did, for its `merge_report` output
+/// what `tets_to_hex_dominant()` did, for its `report` output
 struct Hex_dominant_merge_report
 {
   std::size_t number_of_tets = 0;               ///< in the input
@@ -120,6 +120,11 @@ struct Triangulation_of<Mesh_complex_3_in_triangulation_3<Tr, CornerIndex, Curve
 namespace Hex_dominant_meshing {
 namespace internal {
 
+/// `tets_to_hex_dominant()`: the merging, then the visitor of `np` told that it is over
+template <class Point_3, class NamedParameters>
+Hex_dominant_mesh_3<Point_3> merge_tets_and_visit(Tetrahedral_adjacency& mesh, std::vector<Point_3>&& points,
+                                                  const NamedParameters& np);
+
 /// `stop`: a request to stop of the caller's, asked from several threads at once, besides
 /// the `maximum_running_time` of `np`
 template <class Point_3, class NamedParameters>
@@ -141,7 +146,7 @@ Hex_dominant_mesh_3<Point_3> merge_tets(Tetrahedral_adjacency& mesh, std::vector
     throw std::invalid_argument("tets_to_hex_dominant: maximum_running_time must be non-negative (0: no limit)");
   const VVM::internal::Time_limit time_limit(seconds);
   const std::function<bool()> must_stop = [&]() { return time_limit.is_reached() || (stop && stop()); };
-  HDM::Hex_dominant_merge_report* report = choose_parameter(get_parameter(np, HDM::internal_np::merge_report),
+  HDM::Hex_dominant_merge_report* report = choose_parameter(get_parameter(np, VVM::internal_np::report),
                                                             static_cast<HDM::Hex_dominant_merge_report*>(nullptr));
   Merge_candidate_finder::Frame_inverse B;
   const auto& field = get_parameter_reference(np, VVM::internal_np::frame_field);
@@ -212,6 +217,18 @@ Hex_dominant_mesh_3<Point_3> merge_tets(Tetrahedral_adjacency& mesh, std::vector
   return out;
 }
 
+template <class Point_3, class NamedParameters>
+Hex_dominant_mesh_3<Point_3> merge_tets_and_visit(Tetrahedral_adjacency& mesh, std::vector<Point_3>&& points,
+                                                  const NamedParameters& np)
+{
+  auto visitor = CGAL::parameters::get_parameter(np, CGAL::internal_np::visitor);
+  VVM::internal::check_visitor<decltype(visitor), VVM::Stage_report>();
+  const VVM::internal::Time_limit clock;
+  Hex_dominant_mesh_3<Point_3> out = merge_tets(mesh, std::move(points), np);
+  VVM::internal::visit_stage_end(visitor, VVM::Stage::MERGING, 0, clock.elapsed());
+  return out;
+}
+
 } // namespace internal
 } // namespace Hex_dominant_meshing
 
@@ -252,9 +269,13 @@ Hex_dominant_mesh_3<Point_3> merge_tets(Tetrahedral_adjacency& mesh, std::vector
  *     \cgalParamDescription{threads of the candidate search; the result does not depend on it}
  *     \cgalParamType{`int`} \cgalParamDefault{0: TBB's choice}
  *   \cgalParamNEnd
- *   \cgalParamNBegin{Hex_dominant_meshing::parameters::merge_report}
+ *   \cgalParamNBegin{Hex_dominant_meshing::parameters::report}
  *     \cgalParamDescription{receives the candidate counts, the tets of each cell and the times}
  *     \cgalParamType{`Hex_dominant_meshing::Hex_dominant_merge_report*`} \cgalParamDefault{none}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{visitor}
+ *     \cgalParamDescription{called once the merging is over, with a `VVM::Stage_report`}
+ *     \cgalParamType{a callable taking `const VVM::Stage_report&`} \cgalParamDefault{none}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{maximum_running_time}
  *     \cgalParamDescription{a time limit in seconds, from the call: the candidate search stops once
@@ -276,7 +297,7 @@ tets_to_hex_dominant(const TetMesh& tets, const Named_function_parameters<T, Tag
   Hex_dominant_meshing::internal::Tetrahedral_adjacency mesh;
   std::vector<Point_3> points;
   Hex_dominant_meshing::internal::indexed_tets(tets, mesh, points);
-  return Hex_dominant_meshing::internal::merge_tets(mesh, std::move(points), np);
+  return Hex_dominant_meshing::internal::merge_tets_and_visit(mesh, std::move(points), np);
 }
 
 /// \ingroup PkgHexDominantMeshingRef
@@ -322,7 +343,7 @@ Hex_dominant_mesh_3<Point_3> tets_to_hex_dominant(const std::vector<Point_3>& po
     mesh.tets.push_back(v);
     mesh.subdomain.push_back(subdomains.empty() ? 1 : subdomains[t]);
   }
-  return Hex_dominant_meshing::internal::merge_tets(mesh, std::vector<Point_3>(points), np);
+  return Hex_dominant_meshing::internal::merge_tets_and_visit(mesh, std::vector<Point_3>(points), np);
 }
 
 } // namespace CGAL

@@ -148,11 +148,10 @@ Lattice_request read_lattice_request(const NamedParameters& np)
   o.random_seed = choose_parameter(get_parameter(np, CGAL::internal_np::random_seed), 0u);
   o.verbose = choose_parameter(get_parameter(np, CGAL::internal_np::verbose), false);
   r.threads = choose_parameter(get_parameter(np, VVM::internal_np::number_of_threads), 0);
+  // the rounds' visitor, if it takes their reports (the entry points check that it takes some of theirs)
   auto visitor = get_parameter(np, CGAL::internal_np::visitor);
-  if constexpr(!std::is_same<decltype(visitor), CGAL::internal_np::Param_not_found>::value)
-    o.visitor = [visitor](const Lattice_round_report& report) {
-      return VVM::internal::visit(visitor, report);
-    };
+  if constexpr(std::is_invocable<const decltype(visitor)&, const Lattice_round_report&>::value)
+    o.visitor = [visitor](const Lattice_round_report& report) { return VVM::internal::visit(visitor, report); };
 
   if(has_length && !(r.edge_length > 0 && std::isfinite(r.edge_length)))
     fail("the edge length must be positive and finite");
@@ -238,8 +237,7 @@ Particles_in_domain<MeshDomain> lattice_particles(const MeshDomain& domain, cons
   if(r.options.multiresolution_levels < 0 && r.lattice.type == Lattice_type::CUBIC)
     // one run: refined once from 2 l*, a box that wants one layer more or less than twice the
     // coarse lattice's often got a partial layer (a dislocation line); from 4 l* the lattice was
-    // strained instead (measured: the cube at 4,000-15,000 particles all-hex at 6 of 7 counts,
-    // against 3)
+    // strained instead
     r.options.multiresolution_levels = n >= 3200 ? 2 : n >= 400 ? 1 : 0;
   if(r.options.multiresolution_levels >= 0) {
     out.particles = optimizer(r.options)->run();
@@ -250,12 +248,8 @@ Particles_in_domain<MeshDomain> lattice_particles(const MeshDomain& domain, cons
     // box, and no level count fits both lattices at all counts. So two starts, from k0 + 1 and
     // k0 levels (the coarsest lattices of at most 250 and 2,000 particles), and the one of the
     // lower energy per particle before the last round (the L-BFGS to convergence) finished: the
-    // whole lattice has the lower energy (measured on the 10k cube, energies at the end: BCC
-    // 9,009 particles from 2 levels, energy -0.9046, min dihedral 45.00, against 9,618 from 1,
-    // -0.8979, 30.02; FCC 9,842 from 1, -0.9169, 54.43, against 9,063 from 2, -0.8762, 48.85;
-    // the 2.5k cube in Fig. 4.8's field, BCC 2,415 from 1, -0.8209, 39.79, against 2,188 from 0
-    // at the same l*, 2.29 once corrected to the count). Settling (nothing
-    // left to delete or insert) does not tell: the FCC lattice from 2 levels settles.
+    // whole lattice has the lower energy. Settling (nothing left to delete or insert) does not
+    // tell: a lattice with a dislocation can settle too.
     const int k0 = n > 2000 ? int(std::ceil(std::log(n / 2000) / std::log(8.))) : 0;
     Lattice_options o = r.options;
     o.multiresolution_levels = n / std::pow(8., k0 + 1) >= 20 ? k0 + 1 : k0;
@@ -316,6 +310,20 @@ decltype(auto) with_frame_field(const MeshDomain& domain, const Lattice_request&
     const auto field = default_frame_field(domain, r);
     return run(field, with_time_left(r, time_limit));
   }
+}
+
+/// `lattice_particles_3()`: the particles, then the visitor of `np` told that the stage is over
+template <class MeshDomain, class FrameField, class NamedParameters>
+Lattice_particles_3<typename MeshDomain::R::Point_3>
+particles_of_request(const MeshDomain& domain, const FrameField& field, const Lattice_request& r,
+                     const NamedParameters& np)
+{
+  auto visitor = CGAL::parameters::get_parameter(np, CGAL::internal_np::visitor);
+  VVM::internal::check_visitor<decltype(visitor), Lattice_round_report>();
+  Lattice_particles_3<typename MeshDomain::R::Point_3> p = lattice_particles(domain, field, r).particles;
+  if(!p.stopped_by_visitor && !VVM::internal::visit_stage_end(visitor, VVM::Stage::PARTICLES, p.number_of_rounds, p.time))
+    p.stopped_by_visitor = true;
+  return p;
 }
 
 } // namespace internal
@@ -404,11 +412,12 @@ decltype(auto) with_frame_field(const MeshDomain& domain, const Lattice_request&
  *     \cgalParamType{`double`} \cgalParamDefault{0}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{visitor}
- *     \cgalParamDescription{called after each round with its report (energy, particles deleted and
- *       inserted, time); if it returns `false`, the rounds stop there
+ *     \cgalParamDescription{called after each round with its
+ *       `Tetrahedral_lattice_meshing::Lattice_round_report`, and once the rounds are over with a
+ *       `VVM::Stage_report`; if it returns `false`, the rounds stop there
  *       (`Lattice_particles_3::stopped_by_visitor`)}
- *     \cgalParamType{a callable `void(const Tetrahedral_lattice_meshing::Lattice_round_report&)` or
- *       `bool(const Tetrahedral_lattice_meshing::Lattice_round_report&)`}
+ *     \cgalParamType{a callable taking `const VVM::Stage_report&` or
+ *       `const Tetrahedral_lattice_meshing::Lattice_round_report&`, returning `void` or `bool`}
  *     \cgalParamDefault{none}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{verbose}
@@ -429,7 +438,7 @@ lattice_particles_3(const MeshDomain& domain, const FrameField& field,
                     const NamedParameters& np = parameters::default_values())
 {
   namespace TLM_internal = Tetrahedral_lattice_meshing::internal;
-  return TLM_internal::lattice_particles(domain, field, TLM_internal::read_lattice_request(np)).particles;
+  return TLM_internal::particles_of_request(domain, field, TLM_internal::read_lattice_request(np), np);
 }
 
 /*!
@@ -447,7 +456,7 @@ lattice_particles_3(const MeshDomain& domain, const Named_function_parameters<T,
   namespace TLM_internal = Tetrahedral_lattice_meshing::internal;
   return TLM_internal::with_frame_field(domain, TLM_internal::read_lattice_request(np), np,
                                         [&](const auto& field, const TLM_internal::Lattice_request& r) {
-                                          return TLM_internal::lattice_particles(domain, field, r).particles;
+                                          return TLM_internal::particles_of_request(domain, field, r, np);
                                         });
 }
 

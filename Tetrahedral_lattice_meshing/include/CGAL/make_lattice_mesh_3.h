@@ -43,7 +43,7 @@ enum class Lattice_mesh_optimization
 };
 
 /// \ingroup PkgTetrahedralLatticeMeshingRef
-/// what `make_lattice_mesh_3()` did, for its `Tetrahedral_lattice_meshing::parameters::mesh_report` output
+/// what `make_lattice_mesh_3()` did, for its `Tetrahedral_lattice_meshing::parameters::report` output
 struct Lattice_mesh_report
 {
   std::size_t number_of_particles = 0;
@@ -59,7 +59,7 @@ struct Lattice_mesh_report
   /// `maximum_running_time` stopped a stage: the particles' rounds or the last stage, or left
   /// no time for the last stage (the mesh is valid, its vertices those of the last round)
   bool time_limit_reached = false;
-  /// the visitor returned `false`: the particles' rounds stopped there and the last stage did not run
+  /// the visitor returned `false`: the stage it was told about stopped there, and the stages after it did not run
   bool stopped_by_visitor = false;
 };
 
@@ -82,9 +82,9 @@ bool is_conformal(const FrameField& field, const std::vector<Point_3>& points)
 /// what a vertex's position costs the mean-angle moves of the last stage: the sum of the
 /// alignment errors (degrees) of its edges in the complex, so that a move must raise the
 /// smallest angles of its star by more than it turns its edges off the lattice (on angles
-/// alone, even with the aligned vertices kept in place, the moves raised the elephant's BCC
-/// mean angle to 56.3-56.5 but turned fandisk's edges from 3.46 to 3.7-3.8 degrees off the
-/// lattice; with it both improve). Called sequentially: it keeps the neighbours of the last
+/// alone, even with the aligned vertices kept in place, the moves raised the mean angle but
+/// turned the edges further off the lattice; with the cost both improve). Called
+/// sequentially: it keeps the neighbours of the last
 /// vertex asked, which the moves do not change.
 template <class C3T3, class FrameField>
 class Vertex_alignment_cost
@@ -138,11 +138,13 @@ constexpr double lattice_mean_angle_threshold = 60;
 /// the last stage of `make_lattice_mesh_3()`: GSM in the field's metric \f$ B^T B \f$
 /// (isotropic if the frames are conformal), with or without vertex smoothing, its polishing
 /// aiming at `sliver_bound` degrees (0: none), then its mean-angle moves
-/// under `mean_angle_threshold` degrees (0: none); `time_limit` 0 for none
-template <class C3T3, class MeshDomain, class FrameField>
+/// under `mean_angle_threshold` degrees (0: none); `time_limit` 0 for none. A `visitor` given
+/// sees GSM's rounds and stages (a stop sets `r.stopped_by_visitor`).
+template <class C3T3, class MeshDomain, class FrameField, class Visitor = CGAL::internal_np::Param_not_found>
 Mesh_optimization_return_code optimize_lattice_mesh(C3T3& c3t3, const MeshDomain& domain, const FrameField& field, const Lattice& lattice,
                            Lattice_mesh_optimization stage, double sliver_bound, int threads, double time_limit,
-                           Lattice_mesh_report& r, double mean_angle_threshold = lattice_mean_angle_threshold)
+                           Lattice_mesh_report& r, double mean_angle_threshold = lattice_mean_angle_threshold,
+                           const Visitor& visitor = Visitor())
 {
   namespace GSM = GSM_mesh_optimization;
   typedef typename MeshDomain::R::Point_3 Point_3;
@@ -161,15 +163,25 @@ Mesh_optimization_return_code optimize_lattice_mesh(C3T3& c3t3, const MeshDomain
       GSM::parameters::shortest_polishing_moves(true, GSM::parameters::sliver_bound(sliver_bound,
       GSM::parameters::smooth_vertices(stage == Lattice_mesh_optimization::GSM,
       GSM::parameters::number_of_threads(threads, CGAL::parameters::maximum_running_time(time_limit)))))));
+  auto optimize = [&](const auto& np) {
+    if(r.metric_is_anisotropic) {
+      auto metric = [&field](const Eigen::Vector3d& x) {
+        const Eigen::Matrix3d B = field.B(Point_3(x[0], x[1], x[2]));
+        return Eigen::Matrix3d(B.transpose() * B);
+      };
+      return CGAL::gsm_optimize_mesh_3(c3t3, domain, GSM::parameters::metric_field(metric, np));
+    } // rotations of one scale: the lattice's edge length is the target everywhere
+    return CGAL::gsm_optimize_mesh_3(c3t3, domain, GSM::parameters::uniform_sizing(true, np));
+  };
   Mesh_optimization_return_code code;
-  if(r.metric_is_anisotropic) {
-    auto metric = [&field](const Eigen::Vector3d& x) {
-      const Eigen::Matrix3d B = field.B(Point_3(x[0], x[1], x[2]));
-      return Eigen::Matrix3d(B.transpose() * B);
-    };
-    code = CGAL::gsm_optimize_mesh_3(c3t3, domain, GSM::parameters::metric_field(metric, gsm_np));
-  } else // rotations of one scale: the lattice's edge length is the target everywhere
-    code = CGAL::gsm_optimize_mesh_3(c3t3, domain, GSM::parameters::uniform_sizing(true, gsm_np));
+  if constexpr(std::is_invocable<const Visitor&, const GSM::Round_report&>::value)
+    code = optimize(gsm_np.visitor([&visitor, &r](const auto& report) { // GSM's rounds and stage ends
+      const bool go = VVM::internal::visit_report(visitor, report);
+      if(!go) r.stopped_by_visitor = true;
+      return go;
+    }));
+  else
+    code = optimize(gsm_np);
   r.gsm_time = timer.time();
   return code;
 }
@@ -215,25 +227,33 @@ C3T3 make_lattice_mesh(const MeshDomain& domain, const FrameField& field, const 
       choose_parameter(get_parameter(np, TLM::internal_np::mesh_optimization), Lattice_mesh_optimization::FLIPS);
   const double sliver_bound = lattice_mesh_sliver_bound(np);
   const double mean_angle_threshold = lattice_mesh_mean_angle_threshold(np);
-  Lattice_mesh_report* report = choose_parameter(get_parameter(np, TLM::internal_np::mesh_report),
+  Lattice_mesh_report* report = choose_parameter(get_parameter(np, VVM::internal_np::report),
                                                  static_cast<Lattice_mesh_report*>(nullptr));
   Lattice_mesh_report local;
   Lattice_mesh_report& r = report ? *report : local;
   r = Lattice_mesh_report();
   const VVM::internal::Time_limit time_limit(request.options.maximum_running_time);
+  auto visitor = get_parameter(np, CGAL::internal_np::visitor);
+  VVM::internal::check_visitor<decltype(visitor), Lattice_round_report, GSM_mesh_optimization::Round_report>();
 
   VVM::internal::Lattice_tetrahedralization_options options;
   options.caller = "make_lattice_mesh_3";
   C3T3 c3t3;
   const VVM::internal::Lattice_tetrahedralization<MeshDomain> t = VVM::internal::lattice_tetrahedralization(
-      c3t3, domain, field, request, time_limit, options, [](const auto&) { return true; });
+      c3t3, domain, field, request, time_limit, options,
+      [&](const VVM::internal::Lattice_tetrahedralization_report& tr) {
+        return tr.stopped_by_visitor ||
+               VVM::internal::visit_stage_end(visitor, VVM::Stage::PARTICLES, tr.number_of_particle_rounds, tr.particle_time);
+      });
   VVM::internal::copy_shared_fields(t.report, r);
   r.connection_time = t.report.connection_time;
   r.number_of_feature_edges = t.report.number_of_feature_edges;
   r.number_of_surface_facets = t.report.number_of_surface_facets;
+  if(!r.stopped_by_visitor && !VVM::internal::visit_stage_end(visitor, VVM::Stage::TETRAHEDRA, 0, time_limit.elapsed()))
+    r.stopped_by_visitor = true;
   if(r.time_limit_reached || r.stopped_by_visitor) return c3t3;
   if(optimize_lattice_mesh(c3t3, domain, field, request.lattice, stage, sliver_bound, request.threads,
-                           time_limit.remaining(), r, mean_angle_threshold) == TIME_LIMIT_REACHED)
+                           time_limit.remaining(), r, mean_angle_threshold, visitor) == TIME_LIMIT_REACHED)
     r.time_limit_reached = true;
   return c3t3;
 }
@@ -246,24 +266,19 @@ C3T3 make_lattice_mesh(const MeshDomain& domain, const FrameField& field, const 
  *
  * makes a tetrahedral mesh of `domain` whose vertices form a lattice (BCC or FCC) aligned with
  * the frame field `field`: the particles of `lattice_particles_3()`, connected by their
- * Delaunay triangulation into a `Mesh_complex_3_in_triangulation_3` (cells labelled with the
- * domain's subdomain at their centroid, boundary facets with their surface patch, feature
- * edges along the sharp edges, corners, vertex dimensions and indices as `make_mesh_3()` sets
- * them; the flat cells of boundary particles lying on the surface left out), then optimized by
- * `gsm_optimize_mesh_3()` in the field's metric \f$ M = B^T B \f$ (isotropic when the frames
- * are rotations): by default with its energy-guided flips only, which make the connectivity
- * follow the field while the vertices stay on the lattice, and its polishing of the cells
- * under 30 degrees by the shortest vertex moves that lift them, then moves of the vertices of
- * the cells under 60 degrees that raise their stars' angles by more than they turn their edges
- * off the lattice (dissertation 4.3.2, with CGAL's Delaunay triangulation and GSM in place of
- * GEOGRAM's restricted Voronoi diagram and TetGen).
+ * Delaunay triangulation into a `Mesh_complex_3_in_triangulation_3` labelled as `make_mesh_3()`
+ * labels its meshes, then optimized by `gsm_optimize_mesh_3()` in the field's metric: by
+ * default flips and polishing only, so that the vertices stay on the lattice (dissertation
+ * 4.3.2). The manual, \ref TLMMeshes, describes the stages and their trade-offs.
  *
  * \tparam C3T3 a `Mesh_complex_3_in_triangulation_3` of a `Mesh_triangulation_3` of `MeshDomain`
  * \tparam MeshDomain a model of `MeshDomain_3` (or `MeshDomainWithFeatures_3`) with `bbox()`
  * \tparam FrameField a model of `FrameField_3`
  *
  * \cgalNamedParamsBegin
- *   \cgalParamNBegin{all the named parameters of `lattice_particles_3()`}\cgalParamNEnd
+ *   \cgalParamNBegin{the named parameters of `lattice_particles_3()`}
+ *     \cgalParamDescription{all of them, passed on to it}
+ *   \cgalParamNEnd
  *   \cgalParamNBegin{Tetrahedral_lattice_meshing::parameters::mesh_optimization}
  *     \cgalParamDescription{the last stage: `NONE` (the Delaunay triangulation of the particles),
  *       `FLIPS` (GSM's flips and polishing; the vertices stay on the lattice but for the
@@ -273,30 +288,29 @@ C3T3 make_lattice_mesh(const MeshDomain& domain, const FrameField& field, const 
  *   \cgalParamNEnd
  *   \cgalParamNBegin{GSM_mesh_optimization::parameters::sliver_bound}
  *     \cgalParamDescription{the smallest dihedral angle, in degrees (in the field's metric), that the
- *       polishing of the last stage seeks (see `gsm_optimize_mesh_3()`); 0 skips the polishing.
- *       A higher bound lifts more of the cells of the boundary layer, where the lattice meets a
- *       curved surface, by moving their vertices off the lattice (each by the shortest step that
- *       will do: `GSM_mesh_optimization::parameters::shortest_polishing_moves`): more of their
- *       angles for more alignment error and time (BCC, bound 30 -> 55: on the elephant at 10,000
- *       particles the mean smallest angle 55.05 -> 55.82 degrees, tets under 40 degrees
- *       2,423 -> 734, mean alignment error 5.58 -> 6.87 degrees, time 11 -> 50 s; on fandisk at
- *       18,000, 57.15 -> 57.30, 1,688 -> 463, 3.46 -> 4.40; both without the mean-angle moves)}
+ *       polishing of the last stage seeks; 0 skips the polishing. A higher bound buys angles with
+ *       alignment error and time}
  *     \cgalParamType{`double`, in [0, 70.5)}
  *     \cgalParamDefault{30}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{GSM_mesh_optimization::parameters::mean_angle_threshold}
- *     \cgalParamDescription{after the polishing, the vertices of the cells whose smallest angle is
- *       under this many degrees (in the field's metric) move to raise the sum of their star's
- *       smallest angles less the alignment error of their edges (see `gsm_optimize_mesh_3()`):
- *       the boundary layer, where the lattice meets the surface, gains angles and alignment
- *       (BCC, 0 -> 60: on the elephant at 10,000 particles the mean smallest angle
- *       55.05 -> 56.11 degrees, mean alignment error 5.58 -> 5.15; on fandisk at 18,000,
- *       57.15 -> 57.63, 3.46 -> 3.37; the last stage takes several times longer: on the elephant
- *       2 -> 15 s); 0 skips them}
+ *     \cgalParamDescription{after the polishing, the vertices of the cells under this many degrees
+ *       move where that raises their star's angles by more than it turns their edges off the
+ *       lattice; the last stage takes several times longer. 0 skips these moves}
  *     \cgalParamType{`double`, non-negative}
  *     \cgalParamDefault{60}
  *   \cgalParamNEnd
- *   \cgalParamNBegin{Tetrahedral_lattice_meshing::parameters::mesh_report}
+ *   \cgalParamNBegin{visitor}
+ *     \cgalParamDescription{called with the particles' rounds
+ *       (`Tetrahedral_lattice_meshing::Lattice_round_report`), the last stage's rounds
+ *       (`GSM_mesh_optimization::Round_report`) and each stage's end (`VVM::Stage_report`:
+ *       `PARTICLES`, `TETRAHEDRA`, then GSM's); if it returns `false`, the call stops there
+ *       (see below)}
+ *     \cgalParamType{a callable taking `const VVM::Stage_report&` or one of the rounds' reports,
+ *       returning `void` or `bool`}
+ *     \cgalParamDefault{none}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{Tetrahedral_lattice_meshing::parameters::report}
  *     \cgalParamDescription{receives the counts and the time of each stage}
  *     \cgalParamType{`Tetrahedral_lattice_meshing::Lattice_mesh_report*`} \cgalParamDefault{none}
  *   \cgalParamNEnd
@@ -307,9 +321,9 @@ C3T3 make_lattice_mesh(const MeshDomain& domain, const FrameField& field, const 
  * reached does not start; the result is a valid mesh of the particles of the last round
  * (`Lattice_mesh_report::time_limit_reached`). The stages without which there is no mesh
  * always run: the boundary's sampling, the first particles and their connection (and, in the
- * overload without a field, the cross field's mesh and least-squares solve). A visitor
- * (`lattice_particles_3()`'s) that returns `false` stops the rounds there; the last stage
- * does not run (`Lattice_mesh_report::stopped_by_visitor`).
+ * overload without a field, the cross field's mesh and least-squares solve). A visitor that
+ * returns `false` stops the particles' rounds or the last stage there, and the stages after
+ * it do not run (`Lattice_mesh_report::stopped_by_visitor`).
  *
  * \throw std::invalid_argument as `lattice_particles_3()`, before any work, on bad input
  *   (and on a sliver bound outside [0, 70.5) or a negative mean-angle threshold);

@@ -55,6 +55,8 @@ CGAL_VVM_ADD_NAMED_PARAMETER(metric_field)
 CGAL_VVM_ADD_NAMED_PARAMETER(convergence_threshold)
 /// `int`: the number of threads of the vertex sweeps (default 0: TBB's choice)
 using VVM::parameters::number_of_threads;
+/// `Optimization_report*`: receives what `gsm_optimize_mesh_3()` did (default: none)
+using VVM::parameters::report;
 /// `double`: the smallest dihedral angle, in degrees, that the final polishing seeks (default 30; 0: no polishing)
 CGAL_VVM_ADD_NAMED_PARAMETER(sliver_bound)
 /// `bool`: whether the final polishing may split interior edges, adding vertices (default `true`)

@@ -4,7 +4,7 @@
 // Named parameters shared by the three VVM packages that CGAL's central list
 // does not have: each is declared here once, and the packages' own
 // `parameters` namespaces re-export those they take, so that one pack serves
-// every entry point (`number_of_threads`, `frame_field`). Also those of the
+// every entry point (`number_of_threads`, `frame_field`, `report`). Also those of the
 // local thickness of a surface and of the sizing field made from it.
 //
 //   namespace VVM = CGAL::VVM;
@@ -23,6 +23,7 @@ namespace VVM {
 namespace internal_np {
 
 enum number_of_threads_t { number_of_threads };
+enum report_t { report };
 enum frame_field_t { frame_field };
 enum cells_across_t { cells_across };
 enum minimum_size_t { minimum_size };
@@ -41,6 +42,10 @@ CGAL_VVM_ADD_NAMED_PARAMETER(number_of_threads)
 /// a model of `FrameField_3`, or a `std::reference_wrapper` to one: the frame field that a lattice
 /// follows or in whose space cells are measured
 CGAL_VVM_ADD_NAMED_PARAMETER(frame_field)
+/// a pointer to the entry point's report struct (`GSM_mesh_optimization::Optimization_report*`,
+/// `Tetrahedral_lattice_meshing::Lattice_mesh_report*`, `Hex_dominant_meshing::Hex_dominant_report*`,
+/// `Hex_dominant_meshing::Hex_dominant_merge_report*`): receives what the call did
+CGAL_VVM_ADD_NAMED_PARAMETER(report)
 /// `double`: the number of cells a wall (or a gap) holds across its thickness
 CGAL_VVM_ADD_NAMED_PARAMETER(cells_across)
 /// `double`: the smallest size a sizing field gives

@@ -35,8 +35,6 @@ namespace internal_np {
 
 enum quality_bound_t { quality_bound };
 enum cell_types_t { cell_types };
-enum merge_report_t { merge_report };
-enum hex_dominant_report_t { hex_dominant_report };
 enum stage_visitor_t { stage_visitor };
 enum tetrahedral_mesh_t { tetrahedral_mesh };
 enum boundary_distance_t { boundary_distance };
@@ -52,11 +50,14 @@ CGAL_VVM_ADD_NAMED_PARAMETER(cell_types)
 /// a `FrameField_3`: the qualities are measured in its space (default: the identity); the
 /// field of the lattice in `make_hex_dominant_mesh_3()` (default: the domain's cross field)
 using VVM::parameters::frame_field;
-/// `Hex_dominant_merge_report*`: receives what `tets_to_hex_dominant()` did (default: none)
-CGAL_VVM_ADD_NAMED_PARAMETER(merge_report)
-/// `Hex_dominant_report*`: receives what `make_hex_dominant_mesh_3()` did (default: none)
-CGAL_VVM_ADD_NAMED_PARAMETER(hex_dominant_report)
-/// a callable `void(Hex_dominant_stage, double seconds)`: called after each stage of `make_hex_dominant_mesh_3()`
+/// `Hex_dominant_report*` (`make_hex_dominant_mesh_3()`) or `Hex_dominant_merge_report*`
+/// (`tets_to_hex_dominant()`): receives what the call did (default: none)
+using VVM::parameters::report;
+/// the former names of `report`
+CGAL_VVM_ADD_DEPRECATED_NAMED_PARAMETER(merge_report, report)
+CGAL_VVM_ADD_DEPRECATED_NAMED_PARAMETER(hex_dominant_report, report)
+/// deprecated, use `visitor` (its `VVM::Stage_report`s): a callable
+/// `void(Hex_dominant_stage, double seconds)` called after each stage of `make_hex_dominant_mesh_3()`
 CGAL_VVM_ADD_NAMED_PARAMETER(stage_visitor)
 /// `C3T3*`: receives the tets `make_hex_dominant_mesh_3()` merged (default: none)
 CGAL_VVM_ADD_NAMED_PARAMETER(tetrahedral_mesh)

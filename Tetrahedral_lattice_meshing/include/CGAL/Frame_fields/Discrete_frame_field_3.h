@@ -68,6 +68,7 @@ public:
    * \param cells the tetrahedra, as indices into `points` (may be empty with
    *   `Frame_location::VERTICES`)
    * \param frames one frame \f$ T \f$ per vertex or per cell, as `location` says
+   * \param location whether `frames` are given at the vertices or at the cells
    * \throws std::invalid_argument on an empty mesh, a count of frames that does not
    *   match, a cell index out of range, a non-finite point or one beyond 1e100 in magnitude,
    *   or a degenerate frame

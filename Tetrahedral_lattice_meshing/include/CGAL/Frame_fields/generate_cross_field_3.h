@@ -32,6 +32,14 @@
 namespace CGAL {
 namespace Frame_fields {
 
+/// \ingroup PkgTetrahedralLatticeMeshingFrameFields
+/// what `generate_cross_field_3()` tells its visitor after each smoothing round; `stage` is
+/// `VVM::Stage::FRAME_FIELD`
+struct Cross_field_round_report : VVM::Stage_report
+{
+  double energy = 0; ///< the smoothness energy after the round
+};
+
 /*!
  * \ingroup PkgTetrahedralLatticeMeshingFrameFields
  * The output of `generate_cross_field_3()`: the field, one frame per vertex, and
@@ -134,9 +142,12 @@ generate_cross_field(const Indexed_tetrahedral_mesh<Point_3>& mesh, const NamedP
  *     \cgalParamDefault{1e-4}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{visitor}
- *     \cgalParamDescription{called after each smoothing round as `visitor(round, energy)`, rounds
- *       counted from 1; if it returns `false`, the smoothing stops there (`stopped_by_visitor`)}
- *     \cgalParamType{a callable `void(int, double)` or `bool(int, double)`}
+ *     \cgalParamDescription{called after each smoothing round with its
+ *       `Frame_fields::Cross_field_round_report`, and once the field is made with a
+ *       `VVM::Stage_report`; if it returns `false`, the smoothing stops there
+ *       (`stopped_by_visitor`). A callable `(int round, double energy)` still works (deprecated)}
+ *     \cgalParamType{a callable taking `const VVM::Stage_report&` or
+ *       `const Frame_fields::Cross_field_round_report&`, returning `void` or `bool`}
  *     \cgalParamDefault{none}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{maximum_running_time}
@@ -203,9 +214,12 @@ generate_cross_field_3(const Mesh_complex_3_in_triangulation_3<Tr, CornerIndex, 
  *     \cgalParamDefault{1e-4}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{visitor}
- *     \cgalParamDescription{called after each smoothing round as `visitor(round, energy)`, rounds
- *       counted from 1; if it returns `false`, the smoothing stops there (`stopped_by_visitor`)}
- *     \cgalParamType{a callable `void(int, double)` or `bool(int, double)`}
+ *     \cgalParamDescription{called after each smoothing round with its
+ *       `Frame_fields::Cross_field_round_report`, and once the field is made with a
+ *       `VVM::Stage_report`; if it returns `false`, the smoothing stops there
+ *       (`stopped_by_visitor`). A callable `(int round, double energy)` still works (deprecated)}
+ *     \cgalParamType{a callable taking `const VVM::Stage_report&` or
+ *       `const Frame_fields::Cross_field_round_report&`, returning `void` or `bool`}
  *     \cgalParamDefault{none}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{maximum_running_time}
@@ -262,10 +276,23 @@ generate_cross_field(const Indexed_tetrahedral_mesh<Point_3>& mesh, const NamedP
       choose_parameter(get_parameter(np, CGAL::internal_np::maximum_running_time), 0.));
   const int rounds = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), 100);
   const double tolerance = choose_parameter(get_parameter(np, internal_np::smoothing_tolerance), 1e-4);
+  // the rounds' reports, or, for a visitor taking `(round, energy)` (deprecated), those two
   std::function<bool(int, double)> visitor;
   auto v = get_parameter(np, CGAL::internal_np::visitor);
-  if constexpr(!std::is_same<decltype(v), CGAL::internal_np::Param_not_found>::value)
+  typedef decltype(v) Visitor;
+  if constexpr(std::is_invocable<const Visitor&, const Cross_field_round_report&>::value)
+    visitor = [v, &time_limit](int round, double energy) {
+      Cross_field_round_report r;
+      r.stage = VVM::Stage::FRAME_FIELD;
+      r.round = round;
+      r.elapsed_time = time_limit.elapsed();
+      r.energy = energy;
+      return VVM::internal::visit(v, r);
+    };
+  else if constexpr(std::is_invocable<const Visitor&, int, double>::value)
     visitor = [v](int round, double energy) { return VVM::internal::visit(v, round, energy); };
+  else
+    VVM::internal::check_visitor<Visitor, Cross_field_round_report>();
   const double axis_length = choose_parameter(get_parameter(np, internal_np::axis_length), 1.);
   const bool verbose = choose_parameter(get_parameter(np, CGAL::internal_np::verbose), false);
   if(rounds < 0) throw std::invalid_argument("generate_cross_field_3: number_of_iterations must be >= 0");
@@ -314,6 +341,10 @@ generate_cross_field(const Indexed_tetrahedral_mesh<Point_3>& mesh, const NamedP
   out.solver_iterations = s.solver_iterations;
   out.solver_error = s.solver_error;
   out.direct_solver = s.direct_solver;
+  if(!out.stopped_by_visitor)
+    VVM::internal::visit_stage_end(v, VVM::Stage::FRAME_FIELD,
+                                   out.round_energies.empty() ? 0 : int(out.round_energies.size()) - 1,
+                                   time_limit.elapsed());
   if(verbose)
     std::cerr << "generate_cross_field_3: " << out.singular_edges.size() << " singular edges of "
               << out.number_of_interior_edges << " interior edges in " << out.singular_curves.size()

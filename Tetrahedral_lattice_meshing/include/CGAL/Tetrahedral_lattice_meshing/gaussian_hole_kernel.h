@@ -26,7 +26,10 @@ namespace Tetrahedral_lattice_meshing {
  * Gaussians further than \f$ 6\sigma \f$ from `u` (under \f$ 1.6\cdot 10^{-8} \f$) are skipped.
  * If `de_du` is not null, it receives the gradient \f$ \partial e / \partial u \f$.
  *
+ * \param lattice the lattice, whose one-ring gives the holes
+ * \param u the offset between the two particles
  * \param sigma the kernel width in units of \f$ l^* \f$ (`lattice.sigma` by default)
+ * \param de_du if not null, receives the gradient
  */
 inline double gaussian_hole_kernel(const Lattice& lattice, const Eigen::Vector3d& u, double sigma,
                                    Eigen::Vector3d* de_du = nullptr)
@@ -63,8 +66,12 @@ inline double gaussian_hole_kernel(const Lattice& lattice, const Eigen::Vector3d
  * frozen \f$ B \f$; the force of eq. 4.3 maps the isotropic force by \f$ T \f$ instead of
  * \f$ B^T \f$, which agrees with it for orthonormal frames (cross fields).
  *
+ * \param lattice the lattice, whose one-ring gives the holes
+ * \param B the inverse of the frame at the midpoint
+ * \param v the vector \f$ p_i - p_j \f$
  * \param l_star the target edge length \f$ l^* \f$
  * \param sigma the kernel width in units of \f$ l^* \f$
+ * \param grad_i if not null, receives the gradient with respect to \f$ p_i \f$
  */
 inline double gaussian_hole_pair_energy(const Lattice& lattice, const Eigen::Matrix3d& B, const Eigen::Vector3d& v,
                                         double l_star, double sigma, Eigen::Vector3d* grad_i = nullptr)

@@ -8,6 +8,7 @@
 #define CGAL_TETRAHEDRAL_LATTICE_MESHING_LATTICE_PARTICLE_TYPES_H
 
 #include <CGAL/Tetrahedral_lattice_meshing/Lattice.h>
+#include <CGAL/VVM/Stage_report.h>
 
 #include <cstddef>
 #include <vector>
@@ -26,17 +27,16 @@ enum class Particle_kind
 };
 
 /// \ingroup PkgTetrahedralLatticeMeshingRef
-/// the state of the particle optimization after one round (L-BFGS, then deletion and insertion)
-struct Lattice_round_report
+/// the state of the particle optimization after one round (L-BFGS, then deletion and insertion),
+/// for the visitor; `stage` is `VVM::Stage::PARTICLES`, `round` counts from 1 at each level
+struct Lattice_round_report : VVM::Stage_report
 {
   int level = 0;                  ///< multiresolution level: the edge length is \f$ 2^{level} l^* \f$
-  int round = 0;                  ///< round number within the level
   double energy = 0;              ///< the GHK energy at the end of the L-BFGS run, per particle
   std::size_t number_of_particles = 0; ///< after deletion and insertion
   std::size_t number_deleted = 0;
   std::size_t number_inserted = 0;
   int lbfgs_iterations = 0;
-  double time = 0;                ///< seconds since the start
 };
 
 /*!

@@ -29,7 +29,6 @@ enum kernel_width_t { kernel_width };
 enum neighbor_radius_t { neighbor_radius };
 enum multiresolution_levels_t { multiresolution_levels };
 enum mesh_optimization_t { mesh_optimization };
-enum mesh_report_t { mesh_report };
 
 } // namespace internal_np
 
@@ -57,7 +56,9 @@ using VVM::parameters::frame_field;
 /// `Lattice_mesh_optimization`: how `make_lattice_mesh_3()` ends (default `FLIPS`)
 CGAL_VVM_ADD_NAMED_PARAMETER(mesh_optimization)
 /// `Lattice_mesh_report*`: receives what `make_lattice_mesh_3()` did (default: none)
-CGAL_VVM_ADD_NAMED_PARAMETER(mesh_report)
+using VVM::parameters::report;
+/// the former name of `report`
+CGAL_VVM_ADD_DEPRECATED_NAMED_PARAMETER(mesh_report, report)
 
 } // namespace parameters
 } // namespace Tetrahedral_lattice_meshing

@@ -33,6 +33,8 @@ namespace IO {
  * \tparam MetricB a callable `Eigen::Matrix3d(const Point_3&)` giving the matrix
  *   by which each cell is mapped (at its centroid) before it is measured; the
  *   identity by default.
+ * \param c3t3 the mesh; only its cells in the complex are written
+ * \param B the metric (see `MetricB`)
  * \param extra_cell_data more cell data arrays, named, one value per cell in the complex in
  *   the order of `cells_in_complex_begin()` (e.g. the alignment error of
  *   `Tetrahedral_lattice_meshing::cell_alignment_errors()`)

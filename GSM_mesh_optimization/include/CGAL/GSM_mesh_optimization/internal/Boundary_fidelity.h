@@ -15,11 +15,9 @@
 // than the true distances both ways: along the facet's normal the surface is
 // further than along its own, and a point of the surface beside a crease can be
 // closer to the next facet. Bounds taken from the initial deviations alone let
-// the boundary's Hausdorff distance to the surface grow where they overstate it
-// (hand: a facet measured 0.0102 where the surface was 0.0072 from the boundary;
-// smoothing took that point to 0.0103, the distance up by a third), and a floor
-// at a quantile of them held the thin parts of organic models (dino, armadillo:
-// smallest angles under 25 degrees). So the bounds come from the largest true
+// the boundary's Hausdorff distance to the surface grow where they overstate it,
+// and a floor at a quantile of them held the vertices of thin parts, where the
+// worst cells are. So the bounds come from the largest true
 // distance between the initial boundary and the surface, estimated where the
 // deviations are largest: from a grid point to the surface (the nearest
 // intersection along a cone of directions about the normal) and from the
@@ -33,7 +31,7 @@
 // the surface has a crease the domain
 // does not protect, the distance peaks on the crease, between grid points: on a
 // grid with the facet's edges in 4, moves that kept the bounds let the
-// boundary's Hausdorff distance to the surface grow by 16% (dragknob). So the
+// boundary's Hausdorff distance to the surface grow. So the
 // bounds are measured on that grid and on one with edges in 8, which contains
 // it, and a moved facet that comes within a fifth of its bound on the first
 // must keep its bound on the second too. A moved facet is only tested against its

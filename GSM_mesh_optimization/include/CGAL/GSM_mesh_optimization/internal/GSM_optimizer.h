@@ -41,11 +41,11 @@ namespace GSM_mesh_optimization {
 
 /*!
  * \ingroup PkgGSMMeshOptimizationRef
- * What `gsm_optimize_mesh_3()` reports to its visitor after each round.
+ * What `gsm_optimize_mesh_3()` reports to its visitor after each round; `stage` is
+ * `VVM::Stage::OPTIMIZATION` or, for the polishing passes, `VVM::Stage::POLISHING`.
  */
-struct Round_report
+struct Round_report : VVM::Stage_report
 {
-  int round = 0;              ///< 1 for the first round
   double energy = 0;          ///< mean energy of the cells in the complex (eq. 3.9)
   double min_dihedral_angle = 0; ///< degrees, over the cells in the complex
   /// cells in the complex whose smallest dihedral angle, in the metric, is under the
@@ -57,7 +57,6 @@ struct Round_report
   std::size_t number_of_removals = 0; ///< vertices removed in this round
   /// a round of the final polishing, which lifts the worst cells and may raise the energy
   bool is_polishing = false;
-  double elapsed_time = 0;   ///< seconds since the start
 };
 
 namespace internal {
@@ -286,6 +285,7 @@ private:
 
   void notify(Round_report& report, double smoothing_time, double flip_time) const
   {
+    report.stage = report.is_polishing ? VVM::Stage::POLISHING : VVM::Stage::OPTIMIZATION;
     if(options_.visitor || options_.verbose) {
       report.min_dihedral_angle = mesh_quality_statistics(c3t3_).min_dihedral_angle;
       report.number_of_cells_under_bound = energy_.worst_and_count_under(bound()).second;
@@ -399,8 +399,8 @@ private:
 
   // The cells around each finite vertex, gathered in two passes over the cells, each vertex's
   // in the cells' order: the triangulation's own incident_cells() marks cells and cannot run
-  // in parallel. One array for all the stars: at 100k vertices, a vector per vertex took 30x
-  // its time at 10k
+  // in parallel. One array for all the stars: a vector per vertex, allocated one by one,
+  // took time growing faster than the mesh
   struct Stars
   {
     typedef typename Tr::Cell_handle Cell_handle;

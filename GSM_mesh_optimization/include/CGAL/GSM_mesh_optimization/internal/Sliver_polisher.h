@@ -34,12 +34,10 @@
 // - a surface vertex of a cell under the bound is removed (Surface_vertex_collapse.h)
 //   when its collapse into a neighbour on its patch beats its star's smallest angle, the
 //   new facets as faithful to the surface as the boundary may be; each removal lets one
-//   more split happen. In the first pass every surface vertex is tried, worst stars first
-//   (graded torus-in-ball at 10k: 22.78 -> 24.08 degrees, 3192 -> 2853 tets under 30; dino
-//   26.94 -> 28.60, with 0.3% fewer vertices than the input in place of 2.7% more).
-//   Where the surface is much finer than the interior (turbine, the graded
-//   torus-in-ball), the cells under the bound are wedges between surface edges
-//   and the few interior vertices that neither moves nor splits lift;
+//   more split happen. In the first pass every surface vertex is tried, worst stars first:
+//   stars just over the bound hold the wedges that later moves push under it. Where the
+//   surface is much finer than the interior, the cells under the bound are wedges between
+//   surface edges and the few interior vertices that neither moves nor splits lift;
 // - a cell that no move lifts gets an interior edge split (Edge_split.h) when the
 //   smallest angle of the new cells beats that of the old ones, and, unless the
 //   cell is critical, the penalty of the new cells beats that of the old ones;
@@ -195,7 +193,7 @@ public:
       rescan_if(n > 0);
     }
     // interior splits first, for all the cells: surface splits in the same loop spent the
-    // budget the interior splits and removals needed (turbine at 10k: 552 -> 596 tets under 20)
+    // budget the interior splits and removals needed
     if(!change_bad_cells(bad, [&](const Cell_handle& c, const Cell_vertices&) { return split(splits_, c); }, stop,
                          done.splits))
       return done;
@@ -241,9 +239,8 @@ private:
   // than the interior, many stars just over the bound hold the wedges that go under it at the
   // next move. Each removed vertex is checked against the facets that replace it, not
   // against later ones: not trying again the vertices whose star a collapse changed would
-  // keep a chain of collapses from wearing a thin part away, but cost more than it saved
-  // (run_corpus: armadillo 28.59 -> 27.46 degrees, turbine's tets under 30 4216 -> 4320,
-  // with every boundary within 1.05 of the input's distance to the surface without it);
+  // keep a chain of collapses from wearing a thin part away, but cost more angles than it
+  // saved, and the boundaries stayed close to the surface without it;
   // counts the removals in `n`; false if `stop()` ended it
   template <class Stop>
   bool coarsen_surface(const Stop& stop, std::size_t& n)
@@ -356,9 +353,8 @@ private:
   // rises fastest, within the vertex's degrees of freedom (Freitag and Ollivier-Gooch 1997):
   // the point of least norm in the convex hull of the gradients of the cells within
   // `active_margin` of it. The central difference of the minimum itself sees one cell at a
-  // time, and where two cells are balanced, a step up for one is a step down for the other
-  // (run_corpus, smallest angles: turbine 12.9 -> 16.3, the graded torus-in-ball 15.8 -> 18.8,
-  // armadillo 26.8 -> 28.4 degrees). False if no direction raises them all
+  // time, and where two cells are balanced, a step up for one is a step down for the other.
+  // False if no direction raises them all
   bool max_min_direction(const Ring& r, const Eigen::Vector3d& x0, double q0, Eigen::Vector3d& d) const
   {
     const double h = 1e-4 * r.max_neighbor_distance;
@@ -411,19 +407,16 @@ private:
   /// remeshing, not splits
   static constexpr double max_split_fraction = 0.03;
   /// degrees over the bound: a vertex is removed (Vertex_collapse.h) only if the cells its
-  /// removal makes are all that far over it. At 10k vertices, with 10 the removals were too few
-  /// to pay for the splits (armadillo: 64, 566 cells under 30 left), with 5 armadillo's cells
-  /// under 30 went from 660 to 130 and dino's from 349 to 41, with 2 to 98 and 48
+  /// removal makes are all that far over it: a wider margin leaves too few removals to pay
+  /// for the splits (the margins tried: benchmark/GSM_mesh_optimization/RESULTS.md)
   static constexpr double removal_margin = 5;
   static constexpr int max_backtracking_steps = 8;
   /// degrees over the bound: a max-min move may not put more of its star's cells under it
   static constexpr double guard_margin = 10;
   /// degrees under the bound: a penalty move of a star whose worst cell is nearer the bound may
-  /// put no more of its cells under the bound + `guard_margin` than it lifts over the bound. On
-  /// the graded torus-in-ball at 10k, with 8,300 cells under 30 after the rounds, free trades took
-  /// those under 40 from 12,400 to 17,900 (perturb+exude: 16,700) for 5,400 under 30; this rule
-  /// for all the stars, 13,800 and 6,100 with 580 under 20 (67); for the stars over 20 degrees,
-  /// 16,300, 5,300 and 74
+  /// put no more of its cells under the bound + `guard_margin` than it lifts over the bound:
+  /// where thousands of cells are near the bound, free trades pushed the bulk under 40 degrees,
+  /// while the rule for every star kept the worst cells from being lifted
   static constexpr double free_trade_margin = 10;
   /// at most this share of the cells is lifted whatever it costs the others
   static constexpr double max_critical_share = 0.005;
@@ -525,9 +518,8 @@ private:
   // `shortest_moves`: the shortest step that takes its star's smallest angle to the bound, else
   // the step that raises it most, to at least `least`; if `guarded`, never one that puts more
   // of the star's cells under the bound + `guard_margin`. The first step that raised it at all
-  // moved the vertices of lattice meshes further than needed, and their neighbours under 40
-  // degrees (fandisk's BCC mesh at 18k: 1,855 tets under 40 after the polishing against 1,626
-  // before it, alignment error 3.54 against 3.40; guarded first: 1,688 and 3.46)
+  // moved the vertices of lattice meshes further off the lattice than needed, and pushed their
+  // neighbours under 40 degrees
   bool lift_critical(const Ring& r, const Eigen::Vector3d& x0, double least, const Eigen::Vector3d& d,
                      double alpha, bool guarded) const
   {

@@ -2,8 +2,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // Surface edge split: most cells the polishing leaves under the bound on thin
-// organic models have their smallest dihedral angle at a surface edge (armadillo
-// at 10k: 88 of 118), where the interior splits of Edge_split.h cannot reach:
+// organic models have their smallest dihedral angle at a surface edge, where the
+// interior splits of Edge_split.h cannot reach:
 // crest cells, whose two surface facets meet at 130-150 degrees, and cells with
 // three or four vertices on the surface across a part one or two elements thick.
 // Splitting the surface edge (a, b) puts a new surface vertex x on the domain's
@@ -239,9 +239,9 @@ private:
   // go, if a surface facet other than the edge's two would be inside, if a vertex would be
   // (it would be lost), or past `max_added_cells` (a cell of the complex that the new vertex
   // would invert is left to the callers: its new cell is not positive). The edge's midpoint projected onto a
-  // curved surface often lies beyond an outside cell's facet (armadillo: the surface edges
-  // of the worst cell, all four of whose vertices lie on the surface, inverted one to four
-  // outside cells each): those cells do not belong to the mesh, and their region takes any
+  // curved surface often lies beyond an outside cell's facet (around a cell whose four
+  // vertices all lie on the surface, say): those cells do not belong to the mesh, and their
+  // region takes any
   // triangulation that fills it.
   bool hole(const Split& s, const Bare_point& p, std::vector<Cell_handle>& cells) const
   {

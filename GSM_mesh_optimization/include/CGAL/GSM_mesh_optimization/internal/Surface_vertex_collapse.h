@@ -4,11 +4,10 @@
 // Surface vertex removal by edge collapse: a vertex v on one surface patch goes
 // into a neighbour w across a surface edge (v, w) of that patch (Vertex_collapse.h
 // for the interior). Where the input mesh's surface is much finer than its
-// interior (turbine at 10k: 94% of the vertices on the boundary, the edges from it
-// to the first interior vertices 2.7 times the surface edges), the cells under the
-// bound are flat wedges between fine surface edges and the interior vertices
-// across them; no move or split lifts them (more split budget, 10% or 30%, left
-// turbine with hundreds of cells under 20 degrees), but fewer surface vertices do.
+// interior (most vertices on the boundary, long edges from it to the first interior
+// vertices), the cells under the bound are flat wedges between fine surface edges
+// and the interior vertices across them; no move or split lifts them, even with a
+// larger split budget, but fewer surface vertices do.
 //
 // The collapse is made on the whole star of v, outside cells included (each cell
 // keeps its subdomain), when every new finite cell is positive, the link condition

@@ -12,8 +12,8 @@
 //
 // The polishing (Sliver_polisher.h) removes vertices where the mesh stays good
 // without them, to pay for the edge splits its worst cells need: on thin organic
-// models the splits that lift the cells under 30 degrees take ~5% more vertices
-// (armadillo, dino at 10k), more than the vertex budget of 3%.
+// models the splits that lift the cells under 30 degrees take ~5% more vertices,
+// more than the vertex budget of 3%.
 //
 // Only a vertex inside one subdomain (dimension 3, every cell of its star in the
 // complex with one subdomain index) is removed: the surface and the interfaces keep

@@ -7,6 +7,8 @@
 // `X::internal_np` declares `enum NAME_t { NAME };`, it defines `NAME(t)` and
 // `NAME(t, np)`, the latter appending the parameter to an existing pack.
 // Shared by every VVM package that has parameters of its own.
+// CGAL_VVM_ADD_DEPRECATED_NAMED_PARAMETER(OLD, NEW): `OLD(t)` and `OLD(t, np)` give
+// the parameter `NEW` (a name kept for one release), with a deprecation warning.
 
 #ifndef CGAL_VVM_INTERNAL_ADD_NAMED_PARAMETER_H
 #define CGAL_VVM_INTERNAL_ADD_NAMED_PARAMETER_H
@@ -26,6 +28,19 @@
   {                                                                                              \
     return CGAL::Named_function_parameters<T, internal_np::NAME##_t,                             \
                                            CGAL::Named_function_parameters<NP_T, NP_Tag, NP_Base>>(t, np); \
+  }
+
+#define CGAL_VVM_ADD_DEPRECATED_NAMED_PARAMETER(OLD, NEW)                                       \
+  template <class T>                                                                             \
+  [[deprecated("use the named parameter " #NEW)]] auto OLD(const T& t)                           \
+  {                                                                                              \
+    return NEW(t);                                                                               \
+  }                                                                                              \
+  template <class T, class NP_T, class NP_Tag, class NP_Base>                                    \
+  [[deprecated("use the named parameter " #NEW)]] auto                                           \
+  OLD(const T& t, const CGAL::Named_function_parameters<NP_T, NP_Tag, NP_Base>& np)              \
+  {                                                                                              \
+    return NEW(t, np);                                                                           \
   }
 
 #endif // CGAL_VVM_INTERNAL_ADD_NAMED_PARAMETER_H

@@ -295,6 +295,7 @@ private:
     const auto res = s.lbfgs_round(eps, its);
     s.project();
     Lattice_round_report rep;
+    rep.stage = VVM::Stage::PARTICLES;
     rep.level = level;
     rep.round = r;
     rep.energy = s.size() ? res.energy / double(s.size()) : 0.;
@@ -302,11 +303,11 @@ private:
     rep.number_deleted = deleted;
     rep.number_inserted = inserted;
     rep.lbfgs_iterations = res.iterations;
-    rep.time = timer_.time();
+    rep.elapsed_time = timer_.time();
     if(o_.verbose)
       std::cerr << "  lattice level " << level << " round " << r << ": " << s.size() << " particles (-" << deleted
                 << " +" << inserted << "), energy/particle " << rep.energy << ", " << res.iterations
-                << " L-BFGS its, " << rep.time << " s\n";
+                << " L-BFGS its, " << rep.elapsed_time << " s\n";
     if(o_.visitor && !o_.visitor(rep)) stop_requested_ = true;
   }
 

@@ -16,8 +16,8 @@
 // layer spacing 0.119 to 0.161 l* where it should be constant). Only where the
 // frames stretch: rotation fields (cross fields) keep each round's frames, as
 // their frames are defined up to the lattice's symmetries and their
-// representation jumps (with the derivative, fandisk's cross-field BCC mesh had
-// an alignment error of 7.25 degrees against 4.61). L-BFGS moves each particle
+// representation jumps (with the derivative of those jumps, a cross-field
+// lattice aligned much worse). L-BFGS moves each particle
 // in the imagined space of its own frame (frozen for the round too), where the
 // energy is isotropic: in
 // Euclidean coordinates a stretched or graded field would make the problem

@@ -63,6 +63,7 @@ struct Lattice_tetrahedralization_report
   std::size_t number_of_particles = 0;
   double edge_length = 0;                        ///< \f$ l^* \f$
   double particle_time = 0;                      ///< seconds: boundary sampling and particle optimization
+  int number_of_particle_rounds = 0;             ///< the particles' rounds, all levels together
   double connection_time = 0;                    ///< seconds: connection, boundary refinement and flips
   std::size_t number_of_projected_particles = 0; ///< free particles the complex left on its boundary, put onto it
   std::size_t number_of_boundary_points = 0;     ///< surface points added by the boundary refinement
@@ -116,6 +117,7 @@ lattice_tetrahedralization(C3T3& c3t3, const MeshDomain& domain, const FrameFiel
   r.number_of_particles = pd.particles.size();
   r.edge_length = pd.particles.edge_length;
   r.particle_time = pd.particles.time;
+  r.number_of_particle_rounds = pd.particles.number_of_rounds;
   r.time_limit_reached = pd.particles.time_limit_reached;
   r.stopped_by_visitor = pd.particles.stopped_by_visitor;
   if(!particles_done(r)) r.stopped_by_visitor = true;
