@@ -21,6 +21,9 @@ import sys
 import meshio
 import numpy as np
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+from vvm_checks import Check_failed, require  # noqa: E402
+
 # The cells cut into tetrahedra in meshio's vertex order, the same cuts as in
 # test_hex_dominant_io.cpp. meshio's order is VTK's except for the linear wedge, which
 # is Gmsh's (the triangle 0 1 2 turns around a normal pointing to 3 4 5): its VTU
@@ -34,15 +37,6 @@ SUB_TETRAHEDRA = {
     "pyramid": [(0, 1, 2, 4), (0, 2, 3, 4)],
 }
 VTK_TYPES = {"tetra": 10, "hexahedron": 12, "wedge": 13, "pyramid": 14}
-
-
-class Check_failed(Exception):
-    pass
-
-
-def require(condition, message):
-    if not condition:
-        raise Check_failed(message)
 
 
 def cell_volumes(points, cell_type, connectivity):

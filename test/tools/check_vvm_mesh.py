@@ -22,17 +22,14 @@ import sys
 import meshio
 import numpy as np
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+from vvm_checks import require, run_main  # noqa: E402
+
 ARGS = None
 
 
 def fail(message):
-    print("FAILED: " + message)
-    sys.exit(1)
-
-
-def require(condition, message):
-    if not condition:
-        fail(message)
+    require(False, message)
 
 
 def work(name):
@@ -540,4 +537,4 @@ def main():
 
 
 if __name__ == "__main__":
-    main()
+    run_main(main)
