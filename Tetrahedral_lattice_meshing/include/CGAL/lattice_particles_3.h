@@ -112,8 +112,10 @@ struct Lattice_request
   double seconds_kept_per_particle = 0;
 };
 
+/// (`surface`: for `make_lattice_surface_mesh()`, whose lattice is the hexagonal one, which the
+/// volume entry points refuse)
 template <class NamedParameters>
-Lattice_request read_lattice_request(const NamedParameters& np)
+Lattice_request read_lattice_request(const NamedParameters& np, bool surface = false)
 {
   namespace TLM = Tetrahedral_lattice_meshing;
   using CGAL::parameters::choose_parameter;
@@ -121,7 +123,11 @@ Lattice_request read_lattice_request(const NamedParameters& np)
   auto fail = [](const std::string& m) { throw std::invalid_argument("lattice_particles_3: " + m); };
 
   Lattice_request r;
-  r.lattice = Lattice::make(choose_parameter(get_parameter(np, TLM::internal_np::lattice), Lattice_type::BCC));
+  r.lattice = Lattice::make(choose_parameter(get_parameter(np, TLM::internal_np::lattice),
+                                             surface ? Lattice_type::HEXAGONAL : Lattice_type::BCC));
+  if(r.lattice.is_surface_lattice() != surface)
+    fail(surface ? "a surface's lattice is hexagonal (BCC, FCC and cubic lattices fill volumes)"
+                 : "the hexagonal lattice is a surface's: make_lattice_surface_mesh() makes it");
   constexpr bool has_length =
       !std::is_same<decltype(get_parameter(np, TLM::internal_np::edge_length)), CGAL::internal_np::Param_not_found>::value;
   constexpr bool has_count = !std::is_same<decltype(get_parameter(np, TLM::internal_np::number_of_particles)),

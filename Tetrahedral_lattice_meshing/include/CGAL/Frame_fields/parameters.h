@@ -23,6 +23,8 @@ namespace internal_np {
 enum axis_length_t { axis_length };
 enum features_angle_t { features_angle };
 enum smoothing_tolerance_t { smoothing_tolerance };
+enum maximum_anisotropy_t { maximum_anisotropy };
+enum maximum_size_ratio_t { maximum_size_ratio };
 
 } // namespace internal_np
 
@@ -42,6 +44,8 @@ CGAL_VVM_ADD_NAMED_PARAMETER(features_angle)
 /// `double`: the smoothing of a generated cross field stops after the first round that
 /// lowers its energy by less than this fraction (default 1e-4)
 CGAL_VVM_ADD_NAMED_PARAMETER(smoothing_tolerance)
+CGAL_VVM_ADD_NAMED_PARAMETER(maximum_anisotropy)
+CGAL_VVM_ADD_NAMED_PARAMETER(maximum_size_ratio)
 
 } // namespace parameters
 } // namespace Frame_fields

@@ -4,18 +4,16 @@
 // What the particle engine needs of a domain, for any MeshDomain_3: the inside
 // test (the domain's own), and its boundary as CGAL's Mesh_3 samples it (surface
 // facets with their patches, feature edges with their curves, corners), with
-// AABB trees for the closest point on the surface and on the sharp edges.
+// AABB trees for the closest point on the surface and on the sharp edges
+// (Boundary_samples).
 
 #ifndef CGAL_TETRAHEDRAL_LATTICE_MESHING_INTERNAL_DOMAIN_BOUNDARY_H
 #define CGAL_TETRAHEDRAL_LATTICE_MESHING_INTERNAL_DOMAIN_BOUNDARY_H
 
+#include <CGAL/Tetrahedral_lattice_meshing/internal/Boundary_samples.h>
 #include <CGAL/Tetrahedral_lattice_meshing/internal/Reproducible_sampling.h>
 #include <CGAL/make_mesh_3.h>
 
-#include <CGAL/AABB_segment_primitive.h>
-#include <CGAL/AABB_traits.h>
-#include <CGAL/AABB_tree.h>
-#include <CGAL/AABB_triangle_primitive.h>
 #include <CGAL/Mesh_3/Has_features.h>
 #include <CGAL/Mesh_complex_3_in_triangulation_3.h>
 #include <CGAL/Mesh_criteria_3.h>
@@ -56,15 +54,16 @@ struct Sampling_complex
       type;
 };
 
-inline Eigen::Vector3d to_vector(double x, double y, double z) { return Eigen::Vector3d(x, y, z); }
-
 /*
  * The sampled boundary of a domain. Patches, curves and corners are numbered
  * 0, 1, ... in the order of the domain's own indices (kept in `patch_indices` ...).
  */
 template <class MeshDomain, class GeomTraits>
-class Domain_boundary
+class Domain_boundary : public Boundary_samples<GeomTraits>
 {
+  typedef Boundary_samples<GeomTraits> Base;
+  using Base::eig;
+
 public:
   typedef GeomTraits K;
   typedef typename K::Point_3 Point_3;
@@ -75,19 +74,6 @@ public:
   typedef typename MeshDomain::Subdomain_index Subdomain_index;
   typedef typename C3T3::Curve_index Curve_index;
   typedef typename C3T3::Corner_index Corner_index;
-
-  typedef typename std::vector<Triangle_3>::const_iterator Triangle_iterator;
-  typedef typename std::vector<Segment_3>::const_iterator Segment_iterator;
-  typedef CGAL::AABB_tree<CGAL::AABB_traits<K, CGAL::AABB_triangle_primitive<K, Triangle_iterator>>> Surface_tree;
-  typedef CGAL::AABB_tree<CGAL::AABB_traits<K, CGAL::AABB_segment_primitive<K, Segment_iterator>>> Edge_tree;
-
-  struct Closest
-  {
-    Eigen::Vector3d point;
-    Eigen::Vector3d direction; // the unit normal of the triangle, or the unit tangent of the segment
-    int feature = -1;           // patch or curve number
-    double distance = 0;
-  };
 
   /// samples the boundary of `domain` with Mesh_3 at a resolution fit for particles
   /// `spacing` apart (facets about that size), with a chordal error of 2% of the smallest
@@ -139,40 +125,11 @@ public:
   }
   bool inside(const Eigen::Vector3d& p) const { return subdomain(p) != Subdomain_index(); }
 
-  Closest closest_on_surface(const Eigen::Vector3d& p) const
-  {
-    const Point_3 q(p[0], p[1], p[2]);
-    const auto r = surface_tree_.closest_point_and_primitive(q);
-    const std::size_t t = std::size_t(r.second - triangles_.begin());
-    Closest c;
-    c.point = to_vector(r.first.x(), r.first.y(), r.first.z());
-    c.direction = triangle_normals_[t];
-    c.feature = triangle_patches_[t];
-    c.distance = (c.point - p).norm();
-    return c;
-  }
-
-  bool has_sharp_edges() const { return !segments_.empty(); }
-
-  Closest closest_on_sharp_edge(const Eigen::Vector3d& p) const
-  {
-    CGAL_precondition(has_sharp_edges());
-    const Point_3 q(p[0], p[1], p[2]);
-    const auto r = edge_tree_.closest_point_and_primitive(q);
-    const std::size_t s = std::size_t(r.second - segments_.begin());
-    Closest c;
-    c.point = to_vector(r.first.x(), r.first.y(), r.first.z());
-    c.direction = segment_tangents_[s];
-    c.feature = segment_curves_[s];
-    c.distance = (c.point - p).norm();
-    return c;
-  }
-
   /// the point of the domain's own feature curve nearest to `p`, a point of the sampled sharp
   /// edges: Mesh_3's curve queries (geodesic distances) expect points on the curve itself
   Eigen::Vector3d point_on_curve(const Eigen::Vector3d& p) const
   {
-    CGAL_precondition(has_sharp_edges());
+    CGAL_precondition(this->has_sharp_edges());
     if constexpr(CGAL::Mesh_3::internal::Has_features<MeshDomain>::value) {
       const auto r = edge_tree_.closest_point_and_primitive(Point_3(p[0], p[1], p[2]));
       const std::size_t s = std::size_t(r.second - segments_.begin());
@@ -187,9 +144,6 @@ public:
       return p;
   }
 
-  const std::vector<Eigen::Vector3d>& corners() const { return corners_; }
-  const std::vector<int>& corner_numbers() const { return corner_numbers_; }
-
   /// the cells of the sampling complex, for the volume and random points
   const std::vector<std::array<Eigen::Vector3d, 4>>& cells() const { return cells_; }
 
@@ -197,17 +151,13 @@ public:
   const std::vector<Curve_index>& curve_indices() const { return curve_indices_; }
   const std::vector<Corner_index>& corner_indices() const { return corner_indices_; }
 
-  const std::vector<Triangle_3>& triangles() const { return triangles_; }
-  const std::vector<int>& triangle_patches() const { return triangle_patches_; }
-  const std::vector<Segment_3>& segments() const { return segments_; }
-  const std::vector<int>& segment_curves() const { return segment_curves_; }
-
-  Eigen::Vector3d bbox_min() const { return lo_; }
-  Eigen::Vector3d bbox_max() const { return hi_; }
-
 private:
-  template <class P>
-  static Eigen::Vector3d eig(const P& p) { return to_vector(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())); }
+  using Base::triangles_;
+  using Base::segments_;
+  using Base::segment_curves_;
+  using Base::edge_tree_;
+  using Base::corners_;
+  using Base::corner_numbers_;
 
   void read(const C3T3& c3t3)
   {
@@ -222,12 +172,7 @@ private:
       if(it.second) patch_indices_.push_back(s);
       std::array<Eigen::Vector3d, 3> p;
       for(int k = 0; k < 3; ++k) p[k] = point(f->first->vertex((f->second + 1 + k) & 3));
-      const Eigen::Vector3d n = (p[1] - p[0]).cross(p[2] - p[0]);
-      if(!(n.norm() > 0)) continue; // a flat sampling facet tells nothing
-      triangles_.emplace_back(Point_3(p[0][0], p[0][1], p[0][2]), Point_3(p[1][0], p[1][1], p[1][2]),
-                              Point_3(p[2][0], p[2][1], p[2][2]));
-      triangle_normals_.push_back(n.normalized());
-      triangle_patches_.push_back(it.first->second);
+      this->add_triangle(p[0], p[1], p[2], it.first->second); // a flat sampling facet tells nothing: skipped
     }
     if(triangles_.empty())
       throw std::invalid_argument("lattice particles: the domain is empty (Mesh_3 found no boundary facet)");
@@ -236,10 +181,7 @@ private:
       auto it = curve_number.emplace(ci, int(curve_indices_.size()));
       if(it.second) curve_indices_.push_back(ci);
       const Eigen::Vector3d a = point(e->first->vertex(e->second)), b = point(e->first->vertex(e->third));
-      if(!((b - a).norm() > 0)) continue;
-      segments_.emplace_back(Point_3(a[0], a[1], a[2]), Point_3(b[0], b[1], b[2]));
-      segment_tangents_.push_back((b - a).normalized());
-      segment_curves_.push_back(it.first->second);
+      if(!this->add_segment(a, b, it.first->second)) continue;
       // the chord's length, signed with the curve's orientation (CGAL 5.5.1's
       // signed_geodesic_distance() can loop forever on some point pairs)
       if constexpr(CGAL::Mesh_3::internal::Has_features<MeshDomain>::value) {
@@ -264,39 +206,15 @@ private:
       for(int k = 0; k < 4; ++k) p[k] = point(c->vertex(k));
       cells_.push_back(p);
     }
-    lo_ = hi_ = eig(triangles_[0][0]);
-    for(const Triangle_3& t : triangles_)
-      for(int k = 0; k < 3; ++k) {
-        lo_ = lo_.cwiseMin(eig(t[k]));
-        hi_ = hi_.cwiseMax(eig(t[k]));
-      }
-    surface_tree_.insert(triangles_.begin(), triangles_.end());
-    surface_tree_.build();
-    surface_tree_.accelerate_distance_queries();
-    if(!segments_.empty()) {
-      edge_tree_.insert(segments_.begin(), segments_.end());
-      edge_tree_.build();
-      edge_tree_.accelerate_distance_queries();
-    }
+    this->build_trees();
   }
 
   const MeshDomain& domain_;
-  std::vector<Triangle_3> triangles_;
-  std::vector<Eigen::Vector3d> triangle_normals_;
-  std::vector<int> triangle_patches_;
-  std::vector<Segment_3> segments_;
-  std::vector<Eigen::Vector3d> segment_tangents_;
-  std::vector<int> segment_curves_;
   std::vector<double> segment_arc_lengths_; // chord lengths, signed with the domain's curve
-  std::vector<Eigen::Vector3d> corners_;
-  std::vector<int> corner_numbers_;
   std::vector<std::array<Eigen::Vector3d, 4>> cells_;
   std::vector<Surface_patch_index> patch_indices_;
   std::vector<Curve_index> curve_indices_;
   std::vector<Corner_index> corner_indices_;
-  Eigen::Vector3d lo_, hi_;
-  Surface_tree surface_tree_;
-  Edge_tree edge_tree_;
 };
 
 } // namespace internal

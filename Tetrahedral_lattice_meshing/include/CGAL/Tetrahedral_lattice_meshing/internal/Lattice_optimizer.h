@@ -9,6 +9,7 @@
 #ifndef CGAL_TETRAHEDRAL_LATTICE_MESHING_INTERNAL_LATTICE_OPTIMIZER_H
 #define CGAL_TETRAHEDRAL_LATTICE_MESHING_INTERNAL_LATTICE_OPTIMIZER_H
 
+#include <CGAL/Tetrahedral_lattice_meshing/internal/Boundary_samples.h>
 #include <CGAL/Tetrahedral_lattice_meshing/internal/Particle_deletion.h>
 #include <CGAL/Tetrahedral_lattice_meshing/internal/Particle_insertion.h>
 #include <CGAL/Tetrahedral_lattice_meshing/internal/Particle_system.h>
@@ -123,7 +124,7 @@ inline double lattice_edge_length(const Lattice& lattice, const Domain_measures&
   const double a = m.volume * lattice.particles_per_cube, b = m.area * lattice.particles_per_boundary_square,
                c = m.sharp_edge_length / 4, d = double(m.number_of_corners) / 8;
   if(!(n > d)) return std::numeric_limits<double>::infinity();
-  double x = std::cbrt(n / a);
+  double x = a > 0 ? std::cbrt(n / a) : b > 0 ? std::sqrt(n / b) : (n - d) / c; // (a surface has no volume)
   for(int i = 0; i < 100; ++i) {
     const double f = ((a * x + b) * x + c) * x + d - n, df = (3 * a * x + 2 * b) * x + c;
     const double step = f / df;
@@ -226,9 +227,11 @@ private:
   }
 
   // N particles uniformly in the imagined space: a sampling cell chosen by its imagined
-  // volume, a uniform point in it; the corners as fixed particles.
+  // volume, a uniform point in it; the corners as fixed particles. A surface lattice's
+  // particles go on the surface's triangles instead.
   void random_start(System& s)
   {
+    if(lattice_.is_surface_lattice()) return random_start_on_surface(s);
     const auto& cells = boundary_.cells();
     std::vector<double> w(cells.size());
     for(std::size_t k = 0; k < cells.size(); ++k) {
@@ -255,6 +258,35 @@ private:
       else if(a + b + d > 1) { const double t2 = d; d = a + b + d - 1; a = 1 - b - t2; }
       const auto& p = cells[c];
       s.add(p[0] + a * (p[1] - p[0]) + b * (p[2] - p[0]) + d * (p[3] - p[0]), Particle_kind::FREE);
+    }
+    s.project();
+  }
+
+  // the area's share of particles on the triangles, by imagined area, boundary particles
+  void random_start_on_surface(System& s)
+  {
+    const auto& triangles = boundary_.triangles();
+    std::vector<double> w(triangles.size());
+    auto corner = [&](std::size_t k, int i) { const auto& p = triangles[k][i]; return to_vector(p.x(), p.y(), p.z()); };
+    for(std::size_t k = 0; k < triangles.size(); ++k) {
+      const Eigen::Vector3d c = (corner(k, 0) + corner(k, 1) + corner(k, 2)) / 3.;
+      const Eigen::Matrix3d B = s.B(c);
+      w[k] = 0.5 * (B * (corner(k, 1) - corner(k, 0))).cross(B * (corner(k, 2) - corner(k, 0))).norm();
+    }
+    std::partial_sum(w.begin(), w.end(), w.begin());
+    const double area = w.empty() ? 0. : w.back();
+    const double l = s.edge_length();
+    const std::size_t n = std::size_t(std::llround(area * lattice_.particles_per_boundary_square / (l * l)));
+    for(std::size_t k = 0; k < boundary_.corners().size(); ++k)
+      s.add(boundary_.corners()[k], Particle_kind::CORNER, boundary_.corner_numbers()[k]);
+    CGAL::Random random(o_.random_seed);
+    for(std::size_t k = 0; k < n && area > 0; ++k) {
+      const double t = random.get_double(0, area);
+      const std::size_t c = std::min(std::size_t(std::upper_bound(w.begin(), w.end(), t) - w.begin()), triangles.size() - 1);
+      double a = random.get_double(), b = random.get_double();
+      if(a + b > 1) { a = 1 - a; b = 1 - b; }
+      s.add(corner(c, 0) + a * (corner(c, 1) - corner(c, 0)) + b * (corner(c, 2) - corner(c, 0)), Particle_kind::BOUNDARY,
+            boundary_.triangle_patches()[c], boundary_.triangle_normals()[c]);
     }
     s.project();
   }

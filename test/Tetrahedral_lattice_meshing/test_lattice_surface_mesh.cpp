@@ -1,0 +1,348 @@
+// Copyright (c) 2026 VVM contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// make_lattice_surface_mesh(): the hexagonal lattice on a plane with a constant field,
+// closed manifold meshes of a sphere and a torus whose vertices lie on the surface, the
+// sharp edges of a cube kept as mesh edges, bad inputs refused; the principal curvature
+// field of a torus against its closed form.
+
+#include "lattice_test_support.h"
+
+#include <CGAL/Frame_fields/Surface_frame_field_3.h>
+#include <CGAL/Frame_fields/principal_curvature_frame_field.h>
+#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+#include <CGAL/make_lattice_surface_mesh.h>
+
+#include <CGAL/AABB_face_graph_triangle_primitive.h>
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+
+#include <map>
+
+namespace {
+
+typedef CGAL::Frame_fields::Surface_frame_field_3<K> Surface_field;
+typedef std::array<std::size_t, 3> Face;
+
+struct Soup
+{
+  std::vector<Point> points;
+  std::vector<Face> faces;
+  Surface_mesh mesh() const
+  {
+    Surface_mesh m;
+    std::vector<Surface_mesh::Vertex_index> v;
+    for(const Point& p : points) v.push_back(m.add_vertex(p));
+    for(const Face& f : faces) m.add_face(v[f[0]], v[f[1]], v[f[2]]);
+    return m;
+  }
+};
+
+// an n x n grid of the parallelogram spanned by `a` and `b` in z = 0, two triangles per cell
+Soup parallelogram(int n, const Eigen::Vector2d& a, const Eigen::Vector2d& b)
+{
+  Soup s;
+  for(int j = 0; j <= n; ++j)
+    for(int i = 0; i <= n; ++i) {
+      const Eigen::Vector2d p = (double(i) / n) * a + (double(j) / n) * b;
+      s.points.emplace_back(p[0], p[1], 0.);
+    }
+  auto at = [n](int i, int j) { return std::size_t(j * (n + 1) + i); };
+  for(int j = 0; j < n; ++j)
+    for(int i = 0; i < n; ++i) {
+      s.faces.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
+      s.faces.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+    }
+  return s;
+}
+
+// a unit sphere: an octahedron subdivided k times, projected
+Soup sphere(int k)
+{
+  Soup s;
+  s.points = {Point(1, 0, 0), Point(-1, 0, 0), Point(0, 1, 0), Point(0, -1, 0), Point(0, 0, 1), Point(0, 0, -1)};
+  s.faces = {{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4}, {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}};
+  for(int level = 0; level < k; ++level) {
+    std::map<std::pair<std::size_t, std::size_t>, std::size_t> mid;
+    auto middle = [&](std::size_t a, std::size_t b) {
+      auto key = std::minmax(a, b);
+      auto it = mid.find(key);
+      if(it != mid.end()) return it->second;
+      const Eigen::Vector3d m = (Eigen::Vector3d(s.points[a].x(), s.points[a].y(), s.points[a].z()) +
+                                 Eigen::Vector3d(s.points[b].x(), s.points[b].y(), s.points[b].z())).normalized();
+      s.points.emplace_back(m[0], m[1], m[2]);
+      return mid[key] = s.points.size() - 1;
+    };
+    std::vector<Face> finer;
+    for(const Face& f : s.faces) {
+      const std::size_t a = middle(f[0], f[1]), b = middle(f[1], f[2]), c = middle(f[2], f[0]);
+      finer.push_back({f[0], a, c});
+      finer.push_back({f[1], b, a});
+      finer.push_back({f[2], c, b});
+      finer.push_back({a, b, c});
+    }
+    s.faces = finer;
+  }
+  return s;
+}
+
+Eigen::Vector3d eig(const Point& p) { return Eigen::Vector3d(p.x(), p.y(), p.z()); }
+
+// the largest distance of the mesh's vertices to the surface
+double largest_distance_to(const Surface_mesh& surface, const Surface_mesh& mesh)
+{
+  typedef CGAL::AABB_face_graph_triangle_primitive<Surface_mesh> Primitive;
+  CGAL::AABB_tree<CGAL::AABB_traits<K, Primitive>> tree(faces(surface).first, faces(surface).second, surface);
+  double d = 0;
+  for(auto v : mesh.vertices()) d = std::max(d, std::sqrt(tree.squared_distance(mesh.point(v))));
+  return d;
+}
+
+// ---------------------------------------------------------------------------------------------
+
+void test_plane_hexagonal_lattice()
+{
+  // a parallelogram of 40 x 40 lattice edges along the lattice's 0 and 60 degree directions: the
+  // lattice fits it, 41 x 41 particles
+  const double l = 1. / 40;
+  const Eigen::Vector2d a(1, 0), b(0.5, std::sqrt(3.) / 2);
+  const Soup square = parallelogram(4, a, b);
+  const Surface_mesh surface = square.mesh();
+  const Surface_field field = Surface_field::from_tangent_frames(square.points, square.faces, [](const Eigen::Vector3d&, const Eigen::Vector3d&) {
+    return CGAL::Frame_fields::Tangent_frame();
+  });
+  TLM::Lattice_surface_mesh_report report;
+  const Surface_mesh mesh = CGAL::make_lattice_surface_mesh(
+      surface, field,
+      TLM::parameters::report(&report, TLM::parameters::edge_length(l, CGAL::Frame_fields::parameters::features_angle(45))));
+  std::cout << "  plane: " << mesh.number_of_vertices() << " vertices, " << mesh.number_of_faces() << " faces, l* "
+            << l << ", " << report.number_of_flips << " flips, manifold " << report.is_manifold << "\n";
+  VVM_CHECK(report.is_manifold);
+  VVM_CHECK_EQUAL(mesh.number_of_vertices(), std::size_t(41 * 41));
+  VVM_CHECK_EQUAL(mesh.number_of_faces(), std::size_t(2 * 40 * 40));
+  // away from the border (two edge lengths): degree 6, edges along the lattice's directions
+  auto interior = [&](Surface_mesh::Vertex_index v) {
+    // the lattice coordinates (s, t) of the point s a + t b
+    const Eigen::Vector2d p(mesh.point(v).x(), mesh.point(v).y());
+    Eigen::Matrix2d M;
+    M << a, b;
+    const Eigen::Vector2d st = M.inverse() * p;
+    return std::min({st[0], st[1], 1 - st[0], 1 - st[1]}) > 2 * l;
+  };
+  std::size_t counted = 0, six = 0, edges = 0, aligned = 0;
+  double worst = 0;
+  for(auto v : mesh.vertices())
+    if(interior(v)) {
+      ++counted;
+      six += (mesh.degree(v) == 6);
+    }
+  for(auto e : mesh.edges()) {
+    const auto a = mesh.vertex(e, 0), b = mesh.vertex(e, 1);
+    if(!interior(a) || !interior(b)) continue;
+    const Eigen::Vector3d d = eig(mesh.point(b)) - eig(mesh.point(a));
+    double angle = std::fmod(std::atan2(d[1], d[0]) * 180 / CGAL_PI + 360, 60.);
+    angle = std::min(angle, 60 - angle);
+    worst = std::max(worst, angle);
+    ++edges;
+    aligned += (angle <= 2);
+  }
+  const double r6 = double(six) / double(counted);
+  std::cout << "  plane: r6 " << r6 << " over " << counted << " interior vertices; " << aligned << " of " << edges
+            << " interior edges within 2 deg of the lattice's directions, worst " << worst << " deg\n";
+  VVM_CHECK(counted > 1000);
+  VVM_CHECK(r6 > 0.95);
+  VVM_CHECK_EQUAL(aligned, edges);
+  // every vertex on the plane
+  double off = 0;
+  for(auto v : mesh.vertices()) off = std::max(off, std::abs(mesh.point(v).z()));
+  VVM_CHECK(off <= 1e-12);
+}
+
+// a closed manifold mesh of Euler characteristic `chi`, about `n` vertices, on the surface
+void check_closed_on_surface(const char* name, const Soup& soup, const Surface_field& field, std::size_t n, int chi)
+{
+  const Surface_mesh surface = soup.mesh();
+  TLM::Lattice_surface_mesh_report report;
+  const Surface_mesh mesh =
+      CGAL::make_lattice_surface_mesh(surface, field, TLM::parameters::report(&report, TLM::parameters::number_of_particles(n)));
+  const TLM::Surface_mesh_quality q = TLM::surface_mesh_quality(mesh, field);
+  const double d = largest_distance_to(surface, mesh);
+  std::cout << "  " << name << ": " << q.number_of_vertices << " vertices, " << q.number_of_faces << " faces, r6 " << q.r6
+            << ", xi mean " << q.xi_mean << " min " << q.xi_min << ", angles min " << q.min_angle << " mean "
+            << q.mean_min_angle << ", closed manifold " << q.is_closed_manifold << ", distance " << d << " (l* "
+            << report.edge_length << "), " << report.particle_time << " + " << report.triangle_time << " s\n";
+  VVM_CHECK(report.is_manifold);
+  VVM_CHECK(q.is_closed_manifold);
+  VVM_CHECK(CGAL::is_closed(mesh));
+  VVM_CHECK_EQUAL(int(mesh.number_of_vertices()) - int(mesh.number_of_edges()) + int(mesh.number_of_faces()), chi);
+  VVM_CHECK(std::abs(double(q.number_of_vertices) - double(n)) < 0.1 * double(n));
+  VVM_CHECK(d < 1e-9 * report.edge_length);
+  VVM_CHECK(q.min_angle > 10);
+}
+
+void test_sphere_and_torus()
+{
+  const Soup s = sphere(4);
+  // a constant direction projected on the tangent planes (two singular points)
+  const Surface_field sphere_field = Surface_field::from_tangent_frames(s.points, s.faces, [](const Eigen::Vector3d&, const Eigen::Vector3d&) {
+    CGAL::Frame_fields::Tangent_frame t;
+    t.direction = Eigen::Vector3d(0, 0, 1);
+    return t;
+  });
+  check_closed_on_surface("sphere", s, sphere_field, 3000, 2);
+  // the torus of data/surfaces/torus.off (radii 1 and 0.35 about z), its principal directions:
+  // along the ring and around the tube
+  Soup t;
+  {
+    Surface_mesh m;
+    VVM_CHECK(CGAL::IO::read_polygon_mesh(data_file("surfaces/torus.off"), m));
+    t.points.assign(m.points().begin(), m.points().end());
+    for(auto f : m.faces()) {
+      Face face;
+      int k = 0;
+      for(auto v : CGAL::vertices_around_face(m.halfedge(f), m)) face[std::size_t(k++)] = std::size_t(v);
+      t.faces.push_back(face);
+    }
+  }
+  const Surface_field torus_field = Surface_field::from_tangent_frames(t.points, t.faces, [](const Eigen::Vector3d& c, const Eigen::Vector3d&) {
+    CGAL::Frame_fields::Tangent_frame f;
+    f.direction = Eigen::Vector3d(-c[1], c[0], 0);
+    return f;
+  });
+  check_closed_on_surface("torus", t, torus_field, 3000, 0);
+}
+
+// the cube's twelve edges are mesh edges: the edges between particles on one cube edge add up
+// to its length, and every triangle lies in one face
+void test_cube_sharp_edges()
+{
+  Soup cube;
+  for(int k = 0; k < 8; ++k) cube.points.emplace_back(k & 1 ? 1. : -1., k & 2 ? 1. : -1., k & 4 ? 1. : -1.);
+  cube.faces = {{0, 2, 1}, {1, 2, 3}, {4, 5, 6}, {5, 7, 6}, {0, 1, 4}, {1, 5, 4},
+                {2, 6, 3}, {3, 6, 7}, {0, 4, 2}, {2, 4, 6}, {1, 3, 5}, {3, 7, 5}};
+  const Surface_field field = Surface_field::from_tangent_frames(cube.points, cube.faces, [](const Eigen::Vector3d&, const Eigen::Vector3d& n) {
+    CGAL::Frame_fields::Tangent_frame t; // along an edge of the face
+    t.direction = std::abs(n[0]) > 0.5 ? Eigen::Vector3d(0, 1, 0) : Eigen::Vector3d(1, 0, 0);
+    return t;
+  });
+  const Surface_mesh surface = cube.mesh();
+  TLM::Lattice_surface_mesh_report report;
+  const Surface_mesh mesh =
+      CGAL::make_lattice_surface_mesh(surface, field, TLM::parameters::report(&report, TLM::parameters::number_of_particles(3000)));
+  const TLM::Surface_mesh_quality q = TLM::surface_mesh_quality(mesh, field);
+  auto on_cube_edge = [](const Point& p) { // two coordinates at +-1
+    int n = 0;
+    for(int a = 0; a < 3; ++a) n += std::abs(std::abs(p[a]) - 1) < 1e-12;
+    return n >= 2;
+  };
+  double feature_length = 0;
+  for(auto e : mesh.edges()) {
+    const Point &a = mesh.point(mesh.vertex(e, 0)), &b = mesh.point(mesh.vertex(e, 1));
+    if(on_cube_edge(a) && on_cube_edge(b) && on_cube_edge(CGAL::midpoint(a, b))) feature_length += std::sqrt(CGAL::squared_distance(a, b));
+  }
+  std::size_t across = 0; // triangles not in one face of the cube
+  for(auto f : mesh.faces()) {
+    bool in_face = false;
+    for(int a = 0; a < 3 && !in_face; ++a)
+      for(double side : {-1., 1.}) {
+        bool all = true;
+        for(auto v : CGAL::vertices_around_face(mesh.halfedge(f), mesh)) all = all && std::abs(mesh.point(v)[a] - side) < 1e-12;
+        in_face = in_face || all;
+      }
+    across += !in_face;
+  }
+  std::cout << "  cube: " << q.number_of_vertices << " vertices (" << report.number_of_sharp_edge_particles
+            << " on edges), r6 " << q.r6 << ", xi mean " << q.xi_mean << ", angles min " << q.min_angle << " mean "
+            << q.mean_min_angle << ", feature edges' length " << feature_length << ", " << across
+            << " triangles across an edge, closed manifold " << q.is_closed_manifold << "\n";
+  VVM_CHECK(q.is_closed_manifold);
+  VVM_CHECK_CLOSE(feature_length, 24., 1e-9);
+  VVM_CHECK_EQUAL(across, std::size_t(0));
+  VVM_CHECK(q.min_angle > 15); // the lattice fits four of the twelve edges (its directions are 60 degrees apart)
+  VVM_CHECK(q.r6 > 0.9);
+}
+
+// bad inputs: a clear exception before any work, never a crash
+void test_bad_inputs()
+{
+  using vvm_test::throws_invalid_argument;
+  const Soup square = parallelogram(2, Eigen::Vector2d(1, 0), Eigen::Vector2d(0, 1));
+  const Surface_mesh surface = square.mesh();
+  const Surface_field field = Surface_field::from_tangent_frames(square.points, square.faces, [](const Eigen::Vector3d&, const Eigen::Vector3d&) {
+    return CGAL::Frame_fields::Tangent_frame();
+  });
+  VVM_CHECK(throws_invalid_argument([&] { CGAL::make_lattice_surface_mesh(Surface_mesh(), field); }, "no face"));
+  Surface_mesh with_nan = surface;
+  with_nan.point(*with_nan.vertices().begin()) = Point(std::nan(""), 0, 0);
+  VVM_CHECK(throws_invalid_argument([&] { CGAL::make_lattice_surface_mesh(with_nan, field); }, "non-finite"));
+  Surface_mesh quad;
+  {
+    std::vector<Surface_mesh::Vertex_index> v;
+    for(const Point& p : {Point(0, 0, 0), Point(1, 0, 0), Point(1, 1, 0), Point(0, 1, 0)}) v.push_back(quad.add_vertex(p));
+    quad.add_face(v);
+  }
+  VVM_CHECK(throws_invalid_argument([&] { CGAL::make_lattice_surface_mesh(quad, field); }, "no triangle"));
+  VVM_CHECK(throws_invalid_argument([&] { CGAL::make_lattice_surface_mesh(surface, field, TLM::parameters::edge_length(-1.)); }, "edge length"));
+  VVM_CHECK(throws_invalid_argument([&] { CGAL::make_lattice_surface_mesh(surface, field, TLM::parameters::number_of_particles(0)); }, "at least 1"));
+  VVM_CHECK(throws_invalid_argument([&] { CGAL::make_lattice_surface_mesh(surface, field, TLM::parameters::number_of_particles(std::size_t(1e12))); }, "particles"));
+  VVM_CHECK(throws_invalid_argument([&] { CGAL::make_lattice_surface_mesh(surface, field, TLM::parameters::lattice(TLM::Lattice_type::BCC)); }, "hexagonal"));
+  VVM_CHECK(throws_invalid_argument([&] { CGAL::make_lattice_surface_mesh(surface, field, CGAL::Frame_fields::parameters::features_angle(-5.)); }, "features angle"));
+  // the volume entry points refuse the surface's lattice
+  VVM_CHECK(throws_invalid_argument([&] { TLMI::read_lattice_request(TLM::parameters::lattice(TLM::Lattice_type::HEXAGONAL)); }, "surface"));
+  // a degenerate face, a frame field of the wrong size
+  Soup flat = square;
+  flat.points[4] = flat.points[0];
+  VVM_CHECK(throws_invalid_argument([&] { CGAL::make_lattice_surface_mesh(flat.mesh(), field); }, "degenerate"));
+  VVM_CHECK(throws_invalid_argument([&] { Surface_field(square.points, square.faces, {}); }, "frames for"));
+}
+
+// the torus of data/surfaces/torus.off (radii 1 and 0.35): the largest curvature is the tube's,
+// 1 / 0.35, everywhere; so the first axis goes around the tube with the length sqrt(0.35), and the
+// second along the ring, at most 3 times as long
+void test_curvature_field()
+{
+  Surface_mesh surface;
+  VVM_CHECK(CGAL::IO::read_polygon_mesh(data_file("surfaces/torus.off"), surface));
+  const auto field = CGAL::Frame_fields::principal_curvature_frame_field(surface);
+  double worst_direction = 0, worst_length = 0, largest_ratio = 0;
+  std::size_t corners = 0;
+  auto f = surface.faces().begin();
+  for(const auto& c : field.corner_frames()) {
+    int k = 0;
+    for(auto v : CGAL::vertices_around_face(surface.halfedge(*f), surface)) {
+      const Point& p = surface.point(v);
+      const Eigen::Vector3d ring = Eigen::Vector3d(-p.y(), p.x(), 0).normalized();
+      const auto& t = c.frames[std::size_t(k)];
+      worst_direction = std::max(worst_direction, std::asin(std::min(1., std::abs(t.direction.normalized().dot(ring)))) * 180 / CGAL_PI);
+      worst_length = std::max(worst_length, std::abs(t.length_1 / std::sqrt(0.35) - 1));
+      largest_ratio = std::max(largest_ratio, t.length_2 / t.length_1);
+      ++k;
+      ++corners;
+    }
+    ++f;
+  }
+  std::cout << "  torus field: " << corners << " corners, first axis at most " << worst_direction
+            << " deg off the tube's direction, its length within " << 100 * worst_length << "% of sqrt(0.35), "
+            << "largest ratio " << largest_ratio << "\n";
+  VVM_CHECK_EQUAL(corners, 3 * surface.number_of_faces());
+  VVM_CHECK_LESS(worst_direction, 2.);
+  VVM_CHECK_LESS(worst_length, 0.02);
+  VVM_CHECK(largest_ratio > 1.5 && largest_ratio <= 3 + 1e-12);
+  // the frames at a point: the interpolation gives the same axes
+  const Eigen::Matrix3d T = field.T(Point(1.35, 0, 0)); // the outer equator, where the tube's normal is x
+  VVM_CHECK_CLOSE(std::abs(T.col(0).normalized().dot(Eigen::Vector3d(0, 0, 1))), 1., 1e-3);
+  VVM_CHECK_CLOSE(std::abs(T.col(2).normalized().dot(Eigen::Vector3d(1, 0, 0))), 1., 1e-3);
+  VVM_CHECK(throws_invalid_argument([&] { CGAL::Frame_fields::principal_curvature_frame_field(surface, CGAL::Frame_fields::parameters::maximum_anisotropy(0.5)); }, "anisotropy"));
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+  return vvm_test::run(argc, argv, "test_lattice_surface_mesh", {
+      {"plane_hexagonal_lattice", test_plane_hexagonal_lattice},
+      {"sphere_and_torus", test_sphere_and_torus},
+      {"cube_sharp_edges", test_cube_sharp_edges},
+      {"bad_inputs", test_bad_inputs},
+      {"curvature_field", test_curvature_field}});
+}
