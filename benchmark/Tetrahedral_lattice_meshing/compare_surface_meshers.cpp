@@ -148,18 +148,10 @@ int run(const Options& o)
     Surface_mesh mesh;
     TLM::Lattice_surface_mesh_report report;
     if(method == "lattice") {
-      // once more with a corrected count if the mesh is more than 5% off (on a graded field the
-      // lattice's count is not the estimate's)
-      std::size_t request = o.vertices;
-      for(int attempt = 0; attempt < 2; ++attempt) {
-        mesh = CGAL::make_lattice_surface_mesh(
-            input, field,
-            TLM::parameters::report(&report, TLM::parameters::number_of_particles(request, CGAL::Frame_fields::parameters::features_angle(
-                                                              o.features_angle, CGAL::parameters::random_seed(o.seed).verbose(o.verbose)))));
-        const double ratio = double(mesh.number_of_vertices()) / double(o.vertices);
-        if(std::abs(ratio - 1) <= 0.05) break;
-        request = std::size_t(std::llround(double(request) / ratio));
-      }
+      mesh = CGAL::make_lattice_surface_mesh(
+          input, field,
+          TLM::parameters::report(&report, TLM::parameters::number_of_particles(o.vertices, CGAL::Frame_fields::parameters::features_angle(
+                                                            o.features_angle, CGAL::parameters::random_seed(o.seed).verbose(o.verbose)))));
     } else
       mesh = isotropic_remeshing(input, o.vertices, o.features_angle);
     const double time = timer.time();

@@ -2,7 +2,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // make_lattice_surface_mesh(): the hexagonal lattice on a plane with a constant field,
-// closed manifold meshes of a sphere and a torus whose vertices lie on the surface, the
+// closed manifold meshes of a sphere and a torus whose vertices lie on the surface (the same
+// with one thread as with two), the
 // sharp edges of a cube kept as mesh edges, bad inputs refused; the principal curvature
 // field of a torus against its closed form.
 
@@ -158,13 +159,25 @@ void test_plane_hexagonal_lattice()
   VVM_CHECK(off <= 1e-12);
 }
 
-// a closed manifold mesh of Euler characteristic `chi`, about `n` vertices, on the surface
+// a closed manifold mesh of Euler characteristic `chi`, about `n` vertices, on the surface;
+// the same mesh with one thread as with two
 void check_closed_on_surface(const char* name, const Soup& soup, const Surface_field& field, std::size_t n, int chi)
 {
   const Surface_mesh surface = soup.mesh();
   TLM::Lattice_surface_mesh_report report;
-  const Surface_mesh mesh =
-      CGAL::make_lattice_surface_mesh(surface, field, TLM::parameters::report(&report, TLM::parameters::number_of_particles(n)));
+  const Surface_mesh mesh = CGAL::make_lattice_surface_mesh(
+      surface, field, TLM::parameters::report(&report, TLM::parameters::number_of_particles(n, TLM::parameters::number_of_threads(2))));
+  const Surface_mesh one_thread = CGAL::make_lattice_surface_mesh(
+      surface, field, TLM::parameters::number_of_particles(n, TLM::parameters::number_of_threads(1)));
+  bool same = one_thread.number_of_vertices() == mesh.number_of_vertices() && one_thread.number_of_faces() == mesh.number_of_faces();
+  for(auto v : mesh.vertices()) same = same && one_thread.point(v) == mesh.point(v);
+  for(auto f : mesh.faces()) {
+    auto h = mesh.halfedge(f), g = one_thread.halfedge(f);
+    for(int k = 0; k < 3; ++k, h = mesh.next(h), g = one_thread.next(g))
+      same = same && std::size_t(mesh.target(h)) == std::size_t(one_thread.target(g));
+  }
+  std::cout << "  " << name << ": the same mesh with 1 and 2 threads: " << same << "\n";
+  VVM_CHECK(same);
   const TLM::Surface_mesh_quality q = TLM::surface_mesh_quality(mesh, field);
   const double d = largest_distance_to(surface, mesh);
   std::cout << "  " << name << ": " << q.number_of_vertices << " vertices, " << q.number_of_faces << " faces, r6 " << q.r6

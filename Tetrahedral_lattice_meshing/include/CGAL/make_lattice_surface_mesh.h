@@ -17,6 +17,7 @@
 #include <CGAL/Tetrahedral_lattice_meshing/internal/Surface_boundary.h>
 #include <CGAL/Tetrahedral_lattice_meshing/internal/Surface_metric_flips.h>
 #include <CGAL/Tetrahedral_lattice_meshing/surface_mesh_quality.h>
+#include <CGAL/VVM/internal/Stopping.h>
 #include <CGAL/lattice_particles_3.h>
 
 #include <CGAL/Named_function_parameters.h>
@@ -95,7 +96,9 @@ struct Lattice_surface_mesh_report
  * \cgalNamedParamsBegin
  *   \cgalParamNBegin{Tetrahedral_lattice_meshing::parameters::number_of_particles}
  *     \cgalParamDescription{the number of vertices sought: \f$ l^* \f$ is set so that the lattice
- *       covers the surface's area in the imagined space with that many (not with `edge_length`)}
+ *       covers the surface's area in the imagined space with that many; if the particles come out
+ *       more than 5% off that count (a graded field's lattice has defects), they are made once more
+ *       with \f$ l^* \f$ corrected by the ratio (not with `edge_length`)}
  *     \cgalParamType{`std::size_t`} \cgalParamDefault{10000}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{Tetrahedral_lattice_meshing::parameters::edge_length}
@@ -173,7 +176,7 @@ make_lattice_surface_mesh(const TriangleMesh& surface, const FrameField& field,
   measures.sharp_edge_length = TLM::internal::imagined_sharp_edge_length<Boundary, FrameField, Point_3>(boundary, field);
   measures.number_of_corners = boundary.corners().size();
   if(!(measures.area > 0) || !std::isfinite(measures.area)) fail("the surface has no area");
-  const double l = r.has_length ? r.edge_length : TLM::internal::lattice_edge_length(r.lattice, measures, r.number_of_particles);
+  double l = r.has_length ? r.edge_length : TLM::internal::lattice_edge_length(r.lattice, measures, r.number_of_particles);
   if(!(l < std::numeric_limits<double>::infinity())) fail("too few particles for the surface's corners");
   const double n = TLM::internal::lattice_particle_count(r.lattice, measures, l);
   TLM::internal::check_particle_count(n, "the edge length " + TLM::internal::readable(l));
@@ -182,8 +185,22 @@ make_lattice_surface_mesh(const TriangleMesh& surface, const FrameField& field,
   if(r.options.multiresolution_levels < 0)
     r.options.multiresolution_levels = n > 200 ? (std::min)(6, int(std::ceil(std::log(n / 200) / std::log(4.)))) : 0;
 
-  TLM::internal::Lattice_optimizer<FrameField, Boundary, Point_3> optimizer(r.lattice, field, boundary, l, r.options);
-  const TLM::Lattice_particles_3<Point_3> particles = optimizer.run();
+  // the particles; on a graded field the lattice's count is not the estimate's (its defects): if
+  // it is more than 5% off the count sought, once more with l* corrected by that ratio
+  const VVM::internal::Time_limit time_limit(r.options.maximum_running_time);
+  auto particles_at = [&](double length) {
+    if(time_limit.is_set()) r.options.maximum_running_time = (std::max)(time_limit.remaining(), 1e-9);
+    TLM::internal::Lattice_optimizer<FrameField, Boundary, Point_3> optimizer(r.lattice, field, boundary, length, r.options);
+    return optimizer.run();
+  };
+  TLM::Lattice_particles_3<Point_3> particles = particles_at(l);
+  const double count_ratio = double(particles.size()) / r.number_of_particles;
+  if(!r.has_length && !particles.time_limit_reached && !particles.stopped_by_visitor && std::abs(count_ratio - 1) > 0.05) {
+    l *= std::sqrt(count_ratio);
+    const int rounds = particles.number_of_rounds;
+    particles = particles_at(l);
+    particles.number_of_rounds += rounds;
+  }
   rep.number_of_particles = particles.size();
   rep.number_of_sharp_edge_particles =
       particles.number_of(TLM::Particle_kind::SHARP_EDGE) + particles.number_of(TLM::Particle_kind::CORNER);

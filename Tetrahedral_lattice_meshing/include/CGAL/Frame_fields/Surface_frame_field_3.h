@@ -11,6 +11,7 @@
 #define CGAL_FRAME_FIELDS_SURFACE_FRAME_FIELD_3_H
 
 #include <CGAL/Frame_fields/frame_inverse.h>
+#include <CGAL/Frame_fields/internal/Triangle_mesh_features.h>
 #include <CGAL/Frame_fields/internal/Uniform_grid_3.h>
 
 #include <CGAL/AABB_traits.h>
@@ -166,31 +167,15 @@ public:
   /*!
    * the unit normal at each corner of each face: the area-weighted mean of the normals of the
    * faces around the corner's vertex that turn by at most `features_angle` degrees from the face
-   * \throws std::invalid_argument on an index out of range or a degenerate face
+   * \throws std::invalid_argument on no face, a non-finite coordinate, an index out of range or a
+   *   degenerate face
    */
   static std::vector<std::array<Eigen::Vector3d, 3>> corner_normals(const std::vector<Point_3>& points,
                                                                     const std::vector<Face>& faces, double features_angle)
   {
-    std::vector<Eigen::Vector3d> n(faces.size());
-    std::vector<std::vector<std::size_t>> around(points.size());
-    for(std::size_t f = 0; f < faces.size(); ++f) {
-      for(std::size_t v : faces[f]) {
-        if(v >= points.size()) throw std::invalid_argument("Surface_frame_field_3: a face refers to vertex " + std::to_string(v));
-        around[v].push_back(f);
-      }
-      n[f] = (to_eigen(points[faces[f][1]]) - to_eigen(points[faces[f][0]])).cross(to_eigen(points[faces[f][2]]) - to_eigen(points[faces[f][0]]));
-      if(!(n[f].norm() > 0)) throw std::invalid_argument("Surface_frame_field_3: a face is degenerate");
-    }
-    const double cos_features = std::cos(features_angle * CGAL_PI / 180);
-    std::vector<std::array<Eigen::Vector3d, 3>> out(faces.size());
-    for(std::size_t f = 0; f < faces.size(); ++f)
-      for(int k = 0; k < 3; ++k) {
-        Eigen::Vector3d sum = Eigen::Vector3d::Zero();
-        for(std::size_t g : around[faces[f][k]])
-          if(n[g].normalized().dot(n[f].normalized()) >= cos_features) sum += n[g];
-        out[f][k] = sum.norm() > 0 ? Eigen::Vector3d(sum.normalized()) : Eigen::Vector3d(n[f].normalized());
-      }
-    return out;
+    std::vector<Eigen::Vector3d> xyz;
+    for(const Point_3& p : points) xyz.push_back(to_eigen(p));
+    return internal::Triangle_mesh_features(xyz, faces, features_angle, "Surface_frame_field_3").corner_normals(faces);
   }
 
   Matrix T(const Point_3& p) const
@@ -213,21 +198,11 @@ public:
     Tangent_frame frame;
     frame.length_1 = frame.length_2 = 0;
     const Eigen::Vector3d reference = c.frames[std::size_t(heaviest)].direction.normalized();
-    // isotropic frames are the same turned by 60 degrees (the hexagonal lattice's symmetry),
-    // others by 180
     bool isotropic = true;
     for(const Tangent_frame& t : c.frames) isotropic = isotropic && std::abs(t.length_1 - t.length_2) <= 1e-9 * t.length_1;
     for(std::size_t k = 0; k < 3; ++k) {
       n += w[k] * c.normals[k];
-      const Eigen::Vector3d dk = c.frames[k].direction.normalized(), turned = c.normals[k].cross(dk);
-      Eigen::Vector3d best = dk.dot(reference) >= 0 ? dk : Eigen::Vector3d(-dk);
-      if(isotropic)
-        for(int turn = 1; turn < 6; ++turn) {
-          const double angle = turn * CGAL_PI / 3;
-          const Eigen::Vector3d candidate = std::cos(angle) * dk + std::sin(angle) * turned;
-          if(candidate.dot(reference) > best.dot(reference)) best = candidate;
-        }
-      d += w[k] * best;
+      d += w[k] * internal::matched_direction(c.frames[k].direction.normalized(), c.normals[k], reference, isotropic);
       frame.length_1 += w[k] * c.frames[k].length_1;
       frame.length_2 += w[k] * c.frames[k].length_2;
     }

@@ -13,6 +13,7 @@
 #define CGAL_FRAME_FIELDS_PRINCIPAL_CURVATURE_FRAME_FIELD_H
 
 #include <CGAL/Frame_fields/Surface_frame_field_3.h>
+#include <CGAL/Frame_fields/internal/Triangle_mesh_features.h>
 #include <CGAL/Frame_fields/internal/Triangle_soup.h>
 #include <CGAL/Frame_fields/parameters.h>
 
@@ -25,7 +26,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <map>
 #include <set>
 #include <stdexcept>
 #include <vector>
@@ -86,35 +86,19 @@ principal_curvature_frame_field(const std::vector<typename GeomTraits::Point_3>&
   if(!(anisotropy >= 1) || !std::isfinite(anisotropy)) throw std::invalid_argument(who + "the maximum anisotropy must be at least 1");
   const double size_ratio = choose_parameter(get_parameter(np, internal_np::maximum_size_ratio), 4.);
   if(!(size_ratio >= 1) || !std::isfinite(size_ratio)) throw std::invalid_argument(who + "the maximum size ratio must be at least 1");
-  if(faces.empty()) throw std::invalid_argument(who + "the mesh has no face");
   std::vector<Eigen::Vector3d> p;
-  for(const Point_3& q : points) {
-    p.emplace_back(CGAL::to_double(q.x()), CGAL::to_double(q.y()), CGAL::to_double(q.z()));
-    if(!p.back().allFinite()) throw std::invalid_argument(who + "a vertex has a non-finite coordinate");
-  }
-  // the corners' normals (per side of the sharp edges), the faces around each vertex
-  const std::vector<std::array<Eigen::Vector3d, 3>> corner_normal =
-      Surface_frame_field_3<GeomTraits>::corner_normals(points, faces, features_angle);
+  for(const Point_3& q : points) p.emplace_back(CGAL::to_double(q.x()), CGAL::to_double(q.y()), CGAL::to_double(q.z()));
+  const internal::Triangle_mesh_features mesh(p, faces, features_angle, "principal_curvature_frame_field");
+  const std::vector<std::array<Eigen::Vector3d, 3>> corner_normal = mesh.corner_normals(faces);
+  const std::vector<std::vector<std::size_t>>& around = mesh.vertex_faces();
+  const std::vector<Eigen::Vector3d>& face_normal = mesh.face_normals();
   const std::size_t n = points.size();
-  std::vector<std::vector<std::size_t>> around(n);
-  std::vector<Eigen::Vector3d> face_normal(faces.size());
-  for(std::size_t f = 0; f < faces.size(); ++f) {
-    for(std::size_t v : faces[f]) around[v].push_back(f);
-    face_normal[f] = (p[faces[f][1]] - p[faces[f][0]]).cross(p[faces[f][2]] - p[faces[f][0]]).normalized();
-  }
-  const double cos_features = std::cos(features_angle * CGAL_PI / 180);
   // the sharp edges at each vertex: their unit directions
   std::vector<std::vector<Eigen::Vector3d>> sharp(n);
-  {
-    std::map<std::pair<std::size_t, std::size_t>, std::vector<std::size_t>> edge_faces;
-    for(std::size_t f = 0; f < faces.size(); ++f)
-      for(int k = 0; k < 3; ++k) edge_faces[std::minmax(faces[f][k], faces[f][(k + 1) % 3])].push_back(f);
-    for(const auto& e : edge_faces)
-      if(e.second.size() != 2 || face_normal[e.second[0]].dot(face_normal[e.second[1]]) < cos_features) {
-        const Eigen::Vector3d d = (p[e.first.second] - p[e.first.first]).normalized();
-        sharp[e.first.first].push_back(d);
-        sharp[e.first.second].push_back(d);
-      }
+  for(const auto& e : mesh.feature_edges()) {
+    const Eigen::Vector3d d = (p[e.second] - p[e.first]).normalized();
+    sharp[e.first].push_back(d);
+    sharp[e.second].push_back(d);
   }
   // per vertex: the neighbours, and the side (the faces smoothly joined to a first face)
   std::vector<std::set<std::size_t>> ring(n);
@@ -139,7 +123,7 @@ principal_curvature_frame_field(const std::vector<typename GeomTraits::Point_3>&
     if(around[v].empty()) continue;
     const std::size_t f0 = around[v][0];
     for(std::size_t f : around[v])
-      if(face_normal[f].dot(face_normal[f0]) >= cos_features) normal[v] += face_normal[f];
+      if(mesh.are_smoothly_joined(f, f0)) normal[v] += face_normal[f];
     normal[v].normalize();
     if(!sharp[v].empty()) { // along the sharp edge (the first one met)
       on_sharp_edge[v] = 1;
@@ -183,15 +167,7 @@ principal_curvature_frame_field(const std::vector<typename GeomTraits::Point_3>&
   auto matched = [&](std::size_t u, std::size_t v) {
     Eigen::Vector3d du = d1[u] - d1[u].dot(normal[v]) * normal[v];
     if(!(du.norm() > 0)) return Eigen::Vector3d(Eigen::Vector3d::Zero());
-    du.normalize();
-    Eigen::Vector3d best = du.dot(d1[v]) >= 0 ? du : Eigen::Vector3d(-du);
-    if(isotropic)
-      for(int turn = 1; turn < 6; ++turn) {
-        const double angle = turn * CGAL_PI / 3;
-        const Eigen::Vector3d candidate = std::cos(angle) * du + std::sin(angle) * normal[v].cross(du);
-        if(candidate.dot(d1[v]) > best.dot(d1[v])) best = candidate;
-      }
-    return best;
+    return internal::matched_direction(du.normalized(), normal[v], d1[v], isotropic);
   };
   for(int round = 0; round < 20; ++round) {
     std::vector<Eigen::Vector3d> next = d1;

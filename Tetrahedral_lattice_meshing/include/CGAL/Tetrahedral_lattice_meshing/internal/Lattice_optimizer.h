@@ -226,67 +226,65 @@ private:
     else out_.time_limit_reached = true;
   }
 
-  // N particles uniformly in the imagined space: a sampling cell chosen by its imagined
-  // volume, a uniform point in it; the corners as fixed particles. A surface lattice's
-  // particles go on the surface's triangles instead.
+  // the corners as fixed particles, then the volume's share of particles (a surface lattice: the
+  // area's) uniformly in the imagined space: a cell (triangle) drawn by its imagined measure, a
+  // uniform point in it; insertion fills the boundary layer (a denser start settles in more defects)
   void random_start(System& s)
   {
-    if(lattice_.is_surface_lattice()) return random_start_on_surface(s);
-    const auto& cells = boundary_.cells();
-    std::vector<double> w(cells.size());
-    for(std::size_t k = 0; k < cells.size(); ++k) {
-      const auto& p = cells[k];
-      const Eigen::Vector3d c = 0.25 * (p[0] + p[1] + p[2] + p[3]);
-      w[k] = std::abs(s.B(c).determinant() * (p[1] - p[0]).dot((p[2] - p[0]).cross(p[3] - p[0]))) / 6.;
-    }
-    std::partial_sum(w.begin(), w.end(), w.begin());
-    const double volume = w.empty() ? 0. : w.back();
     const double l = s.edge_length();
-    // the volume's share only: insertion fills the boundary layer (a denser start settles in
-    // more defects)
-    const std::size_t n = std::size_t(std::llround(volume * lattice_.particles_per_cube / (l * l * l)));
-    for(std::size_t k = 0; k < boundary_.corners().size(); ++k)
-      s.add(boundary_.corners()[k], Particle_kind::CORNER, boundary_.corner_numbers()[k]);
-    CGAL::Random random(o_.random_seed);
-    for(std::size_t k = 0; k < n && volume > 0; ++k) {
-      const double t = random.get_double(0, volume);
-      const std::size_t c = std::min(std::size_t(std::upper_bound(w.begin(), w.end(), t) - w.begin()), cells.size() - 1);
-      // a uniform point of a tetrahedron (Rocchini and Cignoni's folding of the unit cube)
-      double a = random.get_double(), b = random.get_double(), d = random.get_double();
-      if(a + b > 1) { a = 1 - a; b = 1 - b; }
-      if(b + d > 1) { const double t2 = d; d = 1 - a - b; b = 1 - t2; }
-      else if(a + b + d > 1) { const double t2 = d; d = a + b + d - 1; a = 1 - b - t2; }
-      const auto& p = cells[c];
-      s.add(p[0] + a * (p[1] - p[0]) + b * (p[2] - p[0]) + d * (p[3] - p[0]), Particle_kind::FREE);
+    if(lattice_.is_surface_lattice()) {
+      const auto& triangles = boundary_.triangles();
+      auto corner = [&](std::size_t k, int i) { const auto& p = triangles[k][i]; return to_vector(p.x(), p.y(), p.z()); };
+      random_start_by_measure(
+          s, triangles.size(), lattice_.particles_per_boundary_square, l * l,
+          [&](std::size_t k) {
+            const Eigen::Matrix3d B = s.B((corner(k, 0) + corner(k, 1) + corner(k, 2)) / 3.);
+            return 0.5 * (B * (corner(k, 1) - corner(k, 0))).cross(B * (corner(k, 2) - corner(k, 0))).norm();
+          },
+          [&](std::size_t k, CGAL::Random& random) {
+            double a = random.get_double(), b = random.get_double();
+            if(a + b > 1) { a = 1 - a; b = 1 - b; }
+            s.add(corner(k, 0) + a * (corner(k, 1) - corner(k, 0)) + b * (corner(k, 2) - corner(k, 0)), Particle_kind::BOUNDARY,
+                  boundary_.triangle_patches()[k], boundary_.triangle_normals()[k]);
+          });
+      return;
     }
-    s.project();
+    const auto& cells = boundary_.cells();
+    random_start_by_measure(
+        s, cells.size(), lattice_.particles_per_cube, l * l * l,
+        [&](std::size_t k) {
+          const auto& p = cells[k];
+          const Eigen::Vector3d c = 0.25 * (p[0] + p[1] + p[2] + p[3]);
+          return std::abs(s.B(c).determinant() * (p[1] - p[0]).dot((p[2] - p[0]).cross(p[3] - p[0]))) / 6.;
+        },
+        [&](std::size_t k, CGAL::Random& random) {
+          // a uniform point of a tetrahedron (Rocchini and Cignoni's folding of the unit cube)
+          double a = random.get_double(), b = random.get_double(), d = random.get_double();
+          if(a + b > 1) { a = 1 - a; b = 1 - b; }
+          if(b + d > 1) { const double t2 = d; d = 1 - a - b; b = 1 - t2; }
+          else if(a + b + d > 1) { const double t2 = d; d = a + b + d - 1; a = 1 - b - t2; }
+          const auto& p = cells[k];
+          s.add(p[0] + a * (p[1] - p[0]) + b * (p[2] - p[0]) + d * (p[3] - p[0]), Particle_kind::FREE);
+        });
   }
 
-  // the area's share of particles on the triangles, by imagined area, boundary particles
-  void random_start_on_surface(System& s)
+  // the corners, then measure * density / unit particles, each added by `add(k, random)` in an
+  // element k drawn in proportion to `measure(k)`
+  template <class Measure, class Add>
+  void random_start_by_measure(System& s, std::size_t elements, double density, double unit, const Measure& measure,
+                               const Add& add)
   {
-    const auto& triangles = boundary_.triangles();
-    std::vector<double> w(triangles.size());
-    auto corner = [&](std::size_t k, int i) { const auto& p = triangles[k][i]; return to_vector(p.x(), p.y(), p.z()); };
-    for(std::size_t k = 0; k < triangles.size(); ++k) {
-      const Eigen::Vector3d c = (corner(k, 0) + corner(k, 1) + corner(k, 2)) / 3.;
-      const Eigen::Matrix3d B = s.B(c);
-      w[k] = 0.5 * (B * (corner(k, 1) - corner(k, 0))).cross(B * (corner(k, 2) - corner(k, 0))).norm();
-    }
+    std::vector<double> w(elements);
+    for(std::size_t k = 0; k < elements; ++k) w[k] = measure(k);
     std::partial_sum(w.begin(), w.end(), w.begin());
-    const double area = w.empty() ? 0. : w.back();
-    const double l = s.edge_length();
-    const std::size_t n = std::size_t(std::llround(area * lattice_.particles_per_boundary_square / (l * l)));
+    const double total = w.empty() ? 0. : w.back();
+    const std::size_t n = std::size_t(std::llround(total * density / unit));
     for(std::size_t k = 0; k < boundary_.corners().size(); ++k)
       s.add(boundary_.corners()[k], Particle_kind::CORNER, boundary_.corner_numbers()[k]);
     CGAL::Random random(o_.random_seed);
-    for(std::size_t k = 0; k < n && area > 0; ++k) {
-      const double t = random.get_double(0, area);
-      const std::size_t c = std::min(std::size_t(std::upper_bound(w.begin(), w.end(), t) - w.begin()), triangles.size() - 1);
-      double a = random.get_double(), b = random.get_double();
-      if(a + b > 1) { a = 1 - a; b = 1 - b; }
-      s.add(corner(c, 0) + a * (corner(c, 1) - corner(c, 0)) + b * (corner(c, 2) - corner(c, 0)), Particle_kind::BOUNDARY,
-            boundary_.triangle_patches()[c], boundary_.triangle_normals()[c]);
+    for(std::size_t k = 0; k < n && total > 0; ++k) {
+      const double t = random.get_double(0, total);
+      add(std::min(std::size_t(std::upper_bound(w.begin(), w.end(), t) - w.begin()), elements - 1), random);
     }
     s.project();
   }

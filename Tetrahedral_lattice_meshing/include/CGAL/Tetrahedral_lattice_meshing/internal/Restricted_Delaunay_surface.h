@@ -91,18 +91,29 @@ std::vector<std::array<std::size_t, 3>> restricted_Delaunay_triangles(const std:
     if(input.size() < 3) continue;
     const Dt dt(input.begin(), input.end());
     if(dt.dimension() < 2) continue;
+    // a facet's vertices in ascending order: the tests below then do not depend on which of
+    // its two cells the facet came from
+    auto vertices_of = [](const typename Dt::Facet& f, std::size_t v[3]) {
+      for(int k = 0, m = 0; k < 4; ++k)
+        if(k != f.second) v[m++] = f.first->vertex(k)->info();
+      std::sort(v, v + 3);
+    };
+    if(dt.dimension() == 2) {
+      for(auto f = dt.finite_facets_begin(); f != dt.finite_facets_end(); ++f) {
+        std::size_t v[3];
+        vertices_of(*f, v);
+        if(!is_flat(v) && boundary.closest_on_surface((points[v[0]] + points[v[1]] + points[v[2]]) / 3.).distance <= tolerance)
+          add(v);
+      }
+      continue;
+    }
     typename Neighbor_search::Tree tree;
     for(const auto& x : input) tree.insert(x.first);
     tree.build();
     for(auto f = dt.finite_facets_begin(); f != dt.finite_facets_end(); ++f) {
       std::size_t v[3];
-      for(int k = 0, m = 0; k < 4; ++k)
-        if(k != f->second) v[m++] = f->first->vertex(k)->info();
+      vertices_of(*f, v);
       if(is_flat(v)) continue;
-      if(dt.dimension() == 2) {
-        if(boundary.closest_on_surface((points[v[0]] + points[v[1]] + points[v[2]]) / 3.).distance <= tolerance) add(v);
-        continue;
-      }
       // the dual: a segment between the circumcentres, or a ray from one; does it cross the
       // patch at a point that no particle is nearer to than the facet's? (the circumcentres of
       // flat tetrahedra, computed in floating point, can be far off: their duals would cross
@@ -110,7 +121,9 @@ std::vector<std::array<std::size_t, 3>> restricted_Delaunay_triangles(const std:
       const auto dual = dt.dual(*f);
       crossings.clear();
       if(const typename K::Segment_3* s = CGAL::object_cast<typename K::Segment_3>(&dual))
-        boundary.surface_tree().all_intersections(*s, std::back_inserter(crossings));
+        boundary.surface_tree().all_intersections(CGAL::compare_xyz(s->source(), s->target()) == CGAL::SMALLER
+                                                      ? *s : s->opposite(),
+                                                  std::back_inserter(crossings));
       else if(const typename K::Ray_3* r = CGAL::object_cast<typename K::Ray_3>(&dual))
         boundary.surface_tree().all_intersections(*r, std::back_inserter(crossings));
       for(const auto& x : crossings) {
@@ -132,6 +145,11 @@ std::vector<std::array<std::size_t, 3>> restricted_Delaunay_triangles(const std:
       }
     }
   }
+  // in a canonical order, each from its smallest index: the Delaunay triangulation is unique
+  // but the order of its facets is not the same from run to run once other threads have
+  // allocated memory, and the holes' filling and the flips depend on the order
+  for(std::array<std::size_t, 3>& t : out) std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
+  std::sort(out.begin(), out.end());
   return out;
 }
 

@@ -11,6 +11,7 @@
 #ifndef CGAL_TETRAHEDRAL_LATTICE_MESHING_INTERNAL_SURFACE_BOUNDARY_H
 #define CGAL_TETRAHEDRAL_LATTICE_MESHING_INTERNAL_SURFACE_BOUNDARY_H
 
+#include <CGAL/Frame_fields/internal/Triangle_mesh_features.h>
 #include <CGAL/Tetrahedral_lattice_meshing/internal/Boundary_samples.h>
 
 #include <Eigen/Core>
@@ -42,41 +43,19 @@ public:
   /// one face or more than two
   Surface_boundary(const std::vector<Eigen::Vector3d>& points, const std::vector<Face>& faces, double features_angle)
   {
-    const char* who = "make_lattice_surface_mesh: ";
-    if(faces.empty()) throw std::invalid_argument(std::string(who) + "the surface has no face");
-    for(const Eigen::Vector3d& p : points)
-      if(!p.allFinite()) throw std::invalid_argument(std::string(who) + "a vertex has a non-finite coordinate");
-    std::vector<Eigen::Vector3d> normal(faces.size());
-    for(std::size_t f = 0; f < faces.size(); ++f) {
-      for(std::size_t v : faces[f])
-        if(v >= points.size()) throw std::invalid_argument(std::string(who) + "a face refers to no vertex");
-      normal[f] = (points[faces[f][1]] - points[faces[f][0]]).cross(points[faces[f][2]] - points[faces[f][0]]);
-      if(!(normal[f].norm() > 0)) throw std::invalid_argument(std::string(who) + "the surface has a degenerate face");
-      normal[f].normalize();
-    }
-    // the edges and their faces
-    std::map<std::pair<std::size_t, std::size_t>, std::vector<std::size_t>> edge_faces;
-    for(std::size_t f = 0; f < faces.size(); ++f)
-      for(int k = 0; k < 3; ++k) {
-        std::size_t a = faces[f][k], b = faces[f][(k + 1) % 3];
-        edge_faces[std::minmax(a, b)].push_back(f);
-      }
-    const double cos_features = std::cos(features_angle * CGAL_PI / 180);
-    std::vector<std::pair<std::size_t, std::size_t>> feature_edges;
+    const Frame_fields::internal::Triangle_mesh_features mesh(points, faces, features_angle, "make_lattice_surface_mesh");
+    const auto& edge_faces = mesh.edge_faces();
+    const auto& feature_edges = mesh.feature_edges();
+    // patches: the faces joined across smooth edges
     std::vector<std::size_t> parent(faces.size());
     std::iota(parent.begin(), parent.end(), 0);
     auto find = [&](std::size_t x) {
       while(parent[x] != x) x = parent[x] = parent[parent[x]];
       return x;
     };
-    for(const auto& e : edge_faces) {
-      const auto& f = e.second;
-      if(f.size() == 2 && normal[f[0]].dot(normal[f[1]]) >= cos_features)
-        parent[find(f[0])] = find(f[1]);
-      else
-        feature_edges.push_back(e.first);
-    }
-    // patches: numbered in the order of their first face
+    for(const auto& e : edge_faces)
+      if(mesh.is_smooth(e.second)) parent[find(e.second[0])] = find(e.second[1]);
+    // numbered in the order of their first face
     std::vector<int> patch_of_root(faces.size(), -1);
     face_patches_.resize(faces.size());
     for(std::size_t f = 0; f < faces.size(); ++f) {
@@ -90,6 +69,7 @@ public:
       vertex_edges[feature_edges[e].first].push_back(e);
       vertex_edges[feature_edges[e].second].push_back(e);
     }
+    const double cos_features = std::cos(features_angle * CGAL_PI / 180);
     std::set<std::size_t> corner_vertices;
     for(const auto& ve : vertex_edges) {
       if(ve.second.size() != 2) {
@@ -121,8 +101,8 @@ public:
         curve_patches_.emplace_back();
         curve_is_border_.push_back(0);
       }
-      if(edge_faces[feature_edges[e]].size() == 1) curve_is_border_[std::size_t(c)] = 1;
-      for(std::size_t f : edge_faces[feature_edges[e]]) curve_patches_[std::size_t(c)].insert(face_patches_[f]);
+      if(edge_faces.at(feature_edges[e]).size() == 1) curve_is_border_[std::size_t(c)] = 1;
+      for(std::size_t f : edge_faces.at(feature_edges[e])) curve_patches_[std::size_t(c)].insert(face_patches_[f]);
       this->add_segment(points[feature_edges[e].first], points[feature_edges[e].second], c);
     }
     for(std::size_t f = 0; f < faces.size(); ++f)
