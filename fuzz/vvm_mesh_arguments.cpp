@@ -34,6 +34,7 @@ VVM_FUZZ_TARGET(vvm_mesh_arguments)
     else if(a.command == "hexdom") (void)CL::hex_dominant_options(a);
     else if(a.command == "optimize") (void)CL::optimize_options(a);
     else if(a.command == "field") (void)CL::field_options(a);
+    else if(a.command == "surface") (void)CL::surface_options(a);
     else if(a.command != "quality") vvm_fuzz::fuzz_failure("parse() accepted the command '" + a.command + "'");
     if(a.input.empty()) vvm_fuzz::fuzz_failure("parse() accepted a command line without input");
   } catch(const std::invalid_argument&) {

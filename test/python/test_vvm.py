@@ -204,6 +204,67 @@ class TestLatticeAndHexDominant:
             assert abs(ours["min_scaled_jacobian"] - theirs["min_scaled_jacobian"]) < 1e-6, name
 
 
+def check_surface_result(mesh, count, euler):
+    """a closed, oriented triangle mesh of about `count` vertices whose report agrees with it"""
+    assert [b.type for b in mesh.cells] == ["triangle"]
+    triangles = mesh.cells[0].data
+    q = mesh.info["quality"]
+    assert (q["vertices"], q["faces"]) == (len(mesh.points), len(triangles))
+    assert q["is_closed_manifold"] and abs(q["vertices"] - count) <= 0.15 * count, q
+    assert q["r6"] >= 0.8 and q["xi_min"] >= 0.3 and q["min_angle"] >= 20, q  # the torus: see check_vvm_mesh.py
+    directed = triangles[:, [0, 1, 1, 2, 2, 0]].reshape(-1, 2)
+    assert len(np.unique(directed, axis=0)) == len(directed)  # each edge once each way
+    edges = np.unique(np.sort(directed, axis=1), axis=0)
+    assert len(directed) == 2 * len(edges)
+    assert len(mesh.points) - len(edges) + len(triangles) == euler
+    return q
+
+
+class TestSurfaceMesh:
+    def test_file(self):
+        events = []
+        mesh = vvm.surface_mesh(data("surfaces/torus.off"), vertices=1500, progress=events.append)
+        check_surface_result(mesh, 1500, 0)
+        assert mesh.info["method"] == "lattice" and mesh.info["field"] == "curvature"
+        stages = {e.stage for e in events}
+        assert "field" in stages and "lattice surface" in stages, stages
+        mesh.write(work("torus.off"))
+        back = meshio.read(work("torus.off"))
+        assert np.allclose(back.points, mesh.points) and np.array_equal(back.cells[0].data, mesh.cells[0].data)
+
+    def test_arrays_as_file(self):
+        """the same surface from arrays and from its file, with one thread and with two: the same mesh"""
+        vertices, faces = read_off(data("surfaces/torus.off"))
+        a = vvm.surface_mesh((vertices, faces), vertices=1500, field="isotropic", threads=1)
+        b = vvm.surface_mesh(data("surfaces/torus.off"), vertices=1500, field="isotropic", threads=2)
+        assert np.array_equal(a.points, b.points) and np.array_equal(a.cells[0].data, b.cells[0].data)
+        assert a.info["input"] == "(arrays)" and a.info["field"] == "isotropic"
+        check_surface_result(a, 1500, 0)
+
+    def test_bad_input(self):
+        vertices, faces = read_off(data("surfaces/torus.off"))
+        nan = vertices.copy()
+        nan[3, 1] = np.nan
+        with pytest.raises(ValueError, match="non-finite"):
+            vvm.surface_mesh((nan, faces), vertices=500)
+        with pytest.raises(ValueError, match="triangle"):
+            vvm.surface_mesh((vertices, np.concatenate([faces, faces[:, :1]], axis=1)), vertices=500)
+        with pytest.raises(ValueError, match="out of range"):
+            vvm.surface_mesh((vertices, faces + len(vertices)), vertices=500)
+        with pytest.raises(ValueError, match="no face"):
+            vvm.surface_mesh((vertices, np.zeros((0, 3), dtype=np.int64)), vertices=500)
+        with pytest.raises(ValueError, match="shape"):
+            vvm.surface_mesh((vertices[:, :2], faces))
+        with pytest.raises(ValueError, match="cannot open"):
+            vvm.surface_mesh(work("no_such_file.off"))
+        with pytest.raises(ValueError, match="unknown field"):
+            vvm.surface_mesh((vertices, faces), vertices=500, field="cross")
+        with pytest.raises(ValueError, match="anisotropy"):
+            vvm.surface_mesh((vertices, faces), vertices=500, maximum_anisotropy=0.5)
+        with pytest.raises(ValueError, match="not both"):
+            vvm.surface_mesh((vertices, faces), vertices=500, size=0.1)
+
+
 class TestOptimize:
     def test_two_labels(self):
         """GSM on a two-label tet mesh made by Gmsh (MEDIT file) read by meshio: the labels and the volume of each kept"""
@@ -458,6 +519,13 @@ class TestSameAsCpp:
                           "--sizing", "thickness", "--threads", "2"])
         assert (q["vertices"], q["tetrahedra"]) == (r["n_vertices"], r["n_tets"])
         assert abs(q["min_dihedral"] - r["theta_min"]) < 1e-9
+
+    def test_surface_mesh(self):
+        q = vvm.surface_mesh(data("fandisk.off"), vertices=1500, threads=2, seed=3).info["quality"]
+        r = run_vvm_mesh(["surface", data("fandisk.off"), "-o", work("fandisk_surface.ply"), "--vertices", "1500",
+                          "--threads", "2", "--seed", "3"])
+        assert q["is_closed_manifold"] and r["is_closed_manifold"]
+        assert (q["vertices"], q["faces"]) == (r["n_vertices"], r["n_faces"]) and abs(q["r6"] - r["r6"]) < 1e-6, (q, r)
 
     def test_hex_dominant(self):
         mesh = vvm.hex_dominant(data("cube.off"), particles=1000, threads=2)

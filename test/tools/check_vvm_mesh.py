@@ -278,6 +278,58 @@ def check_quality():
     require("histogram" in out and "radius ratio" in out, f"quality table:\n{out}")
 
 
+def read_closed_surface(path):
+    """(points, triangles, Euler characteristic) of a triangle surface file, checked closed and
+    oriented: each edge in two triangles, once each way"""
+    mesh = meshio.read(path)
+    require([b.type for b in mesh.cells] == ["triangle"], f"{path}: cells {[b.type for b in mesh.cells]}")
+    triangles = mesh.cells[0].data
+    directed = triangles[:, [0, 1, 1, 2, 2, 0]].reshape(-1, 2)
+    require(len(np.unique(directed, axis=0)) == len(directed), f"{path}: an edge twice the same way")
+    edges, counts = np.unique(np.sort(directed, axis=1), axis=0, return_counts=True)
+    require((counts == 2).all(), f"{path}: {(counts != 2).sum()} edges not in two triangles")
+    return mesh.points, triangles, len(np.unique(triangles)) - len(edges) + len(triangles)
+
+
+SURFACE_KEYS = ("model", "method", "field", "n_vertices", "n_faces", "r6", "xi_mean", "xi_min", "min_angle_metric_deg",
+                "mean_min_angle_metric_deg", "alignment_error_mean_deg", "is_closed_manifold", "time_s")
+
+
+def check_surface():
+    """vvm-mesh surface: the torus in its curvature field (.off), fandisk's sharp edges (.ply) and
+    the cube in the identity field at an edge length (.obj), read back closed and oriented, with
+    the report's counts; no temporary file left"""
+    # lower bounds of r6, xi mean, xi min, the smallest angle, under the figures of seeds 0-9 (torus:
+    # 0.94-0.95, 0.95, 0.47-0.59, 27-34 degrees; fandisk: 0.65-0.67, 0.84-0.85, and next to its sharp
+    # edges a sliver now and then: xi min 0-0.21, smallest angle 0.01-10.6 degrees)
+    for model, out, euler, bounds in (("surfaces/torus.off", "torus.off", 0, (0.9, 0.9, 0.3, 20)),
+                                      ("fandisk.off", "fandisk.ply", 2, (0.55, 0.8, 0, 0))):
+        stdout, err = run(["surface", data(model), "-o", work(out), "--vertices", "1500", "--json", work(out + ".json")])
+        r = report(work(out + ".json"))
+        require(all(k in r for k in SURFACE_KEYS), f"keys missing in {sorted(r)}")
+        require(r["method"] == "lattice" and r["field"] == "curvature" and r["is_closed_manifold"], f"report {r}")
+        require(abs(r["n_vertices"] - 1500) <= 0.15 * 1500, f"{r['n_vertices']} vertices for --vertices 1500")
+        figures = (r["r6"], r["xi_mean"], r["xi_min"], r["min_angle_metric_deg"])
+        require(all(f >= b for f, b in zip(figures, bounds)), f"quality of {model}: {r}")
+        points, triangles, chi = read_closed_surface(work(out))
+        require((len(np.unique(triangles)), len(triangles), chi) == (r["n_vertices"], r["n_faces"], euler),
+                f"{out}: {len(np.unique(triangles))} vertices, {len(triangles)} triangles, Euler characteristic {chi}")
+        require("field: " in err and "lattice surface: " in err, f"progress:\n{err}")
+        require("closed manifold" in stdout and "yes" in stdout, f"summary:\n{stdout}")
+    # the vertices lie on the torus of radii 1 and 0.35 (its 160 x 60 faces are within 0.001 of it)
+    points = read_closed_surface(work("torus.off"))[0]
+    distance = np.abs(np.hypot(np.hypot(points[:, 0], points[:, 1]) - 1, points[:, 2]) - 0.35)
+    require(distance.max() < 2e-3, f"a vertex {distance.max()} off the torus")
+    run(["surface", data("cube.off"), "-o", work("cube.obj"), "--field", "identity", "--size", "0.25", "--quiet",
+         "--json", work("cube.json")])
+    r = report(work("cube.json"))
+    points, triangles, chi = read_closed_surface(work("cube.obj"))
+    require(r["is_closed_manifold"] and r["field"] == "identity" and chi == 2, f"report {r}")
+    require(np.abs(points).max() <= 1 + 1e-9 and (np.abs(points).max(axis=1) >= 1 - 1e-9).all(),
+            "a vertex of the cube's mesh is not on the cube")
+    require(not [n for n in os.listdir(ARGS.work) if n.endswith(".tmp")], "temporary files left")
+
+
 def tetgen_mesh(model):
     """TetGen's quality mesh of a bundled model (boundary kept), as MEDIT"""
     shutil.copy(data(model + ".off"), work(model + ".off"))
@@ -371,7 +423,7 @@ def bad_case(args, words, output):
 
 
 def check_bad_inputs():
-    out = work("out.mesh")
+    out, surface_out = work("out.mesh"), work("out.off")
     with open(work("empty.off"), "w"):
         pass
     with open(data("cube.off")) as f:
@@ -391,6 +443,9 @@ def check_bad_inputs():
                 "Tetrahedra\n1\n1 2 3 4 1\nEnd\n")
     with open(work("nocell.mesh"), "w") as f:
         f.write(f"MeshVersionFormatted 1\nDimension 3\nVertices\n5\n{tet}End\n")
+    with open(work("quads.off"), "w") as f:  # the cube of six quadrilaterals
+        f.write("OFF\n8 6 0\n" + "\n".join(lines[2:10]) +
+                "\n4 0 1 2 3\n4 4 7 6 5\n4 0 4 5 1\n4 1 5 6 2\n4 2 6 7 3\n4 3 7 4 0\n")
     cases = [
         (["tet", work("missing.off"), "-o", out], "cannot open"),
         (["tet", work("empty.off"), "-o", out], "empty"),
@@ -414,10 +469,18 @@ def check_bad_inputs():
         (["hexdom", data("cube.off"), "-o", out, "--sizing", "magic"], "unknown sizing"),
         (["tet", data("cube.off"), "-o", out, "--time-limit", "-1"], "time-limit"),
         (["quality", work("missing.mesh")], "cannot open"),
+        (["surface", work("missing.off"), "-o", surface_out], "cannot open"),
+        (["surface", work("empty.off"), "-o", surface_out], "empty"),
+        (["surface", work("nan.off"), "-o", surface_out], "non-finite|cannot read"),
+        (["surface", work("quads.off"), "-o", surface_out], "triangle"),
+        (["surface", data("cube.off"), "-o", out], "extension"),
+        (["surface", data("cube.off"), "-o", surface_out, "--field", "cross"], "unknown field"),
+        (["surface", data("cube.off"), "-o", surface_out, "--maximum-anisotropy", "0.5"], "anisotropy"),
+        (["surface", data("cube.off"), "-o", surface_out, "--vertices", "10"], "vertices"),
         (["frobnicate"], "unknown command"),
     ]
     for args, words in cases:
-        bad_case(args, words, out)
+        bad_case(args, words, surface_out if surface_out in args else out)
     require(not os.path.exists(work("out.xyz")), "out.xyz written")
 
 def write_pinched_boxes(path, n=6, seed=3):

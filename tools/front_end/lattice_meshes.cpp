@@ -4,7 +4,7 @@
 // The front end's particle meshes of a closed surface: BCC / FCC lattice tet
 // meshes (vvm::tet_mesh), hex-dominant meshes, and the cross field alone.
 
-#include "optimizer_chain.h"
+#include "lattice_progress.h"
 
 #include <CGAL/Frame_fields/Closed_form_frame_field_3.h>
 #include <CGAL/Frame_fields/Constant_frame_field_3.h>
@@ -14,13 +14,11 @@
 #include <CGAL/make_hex_dominant_mesh_3.h>
 #include <CGAL/make_lattice_mesh_3.h>
 #include <CGAL/Tetrahedral_lattice_meshing/internal/Domain_cross_field.h>
-#include <CGAL/VVM/Stage_report.h>
 
 #include <cmath>
 #include <fstream>
 #include <memory>
 #include <sstream>
-#include <type_traits>
 
 namespace vvm {
 namespace internal {
@@ -29,39 +27,6 @@ namespace {
 namespace FF = CGAL::Frame_fields;
 namespace TLM = CGAL::Tetrahedral_lattice_meshing;
 namespace HDM = CGAL::Hex_dominant_meshing;
-
-std::string particle_round_text(const TLM::Lattice_round_report& r)
-{
-  char text[160];
-  std::snprintf(text, sizeof text, "level %d round %d: %zu particles, energy %.4g", r.level, r.round,
-                r.number_of_particles, r.energy);
-  return text;
-}
-
-std::string stage_end_text(const CGAL::VVM::Stage_report& r)
-{
-  typedef CGAL::VVM::Stage S;
-  const char* name = r.stage == S::FRAME_FIELD ? "cross field" : r.stage == S::PARTICLES ? "particles"
-                     : r.stage == S::TETRAHEDRA ? "tetrahedra" : r.stage == S::OPTIMIZATION ? "gsm rounds"
-                     : r.stage == S::POLISHING ? "gsm polishing" : "merging";
-  char text[160];
-  std::snprintf(text, sizeof text, "%s done at %.2f s", name, r.elapsed_time);
-  return text;
-}
-
-/// the progress lines of a lattice mesher: the particles' and GSM's rounds, and each stage's end
-auto progress_visitor(const Stage& stage)
-{
-  return [&stage](const auto& r) {
-    typedef std::decay_t<decltype(r)> Report;
-    if constexpr(std::is_same<Report, TLM::Lattice_round_report>::value) stage.report(particle_round_text(r));
-    else if constexpr(std::is_same<Report, CGAL::GSM_mesh_optimization::Round_report>::value)
-      stage.report(gsm_round_text(r));
-    else if constexpr(std::is_same<Report, CGAL::VVM::Stage_report>::value) {
-      if(r.stage_done) stage.report(stage_end_text(r));
-    }
-  };
-}
 
 /// calls `run(field)` with the field `name` names: identity, a frame-field file, or (cross)
 /// no field, for the packages' own boundary-aligned cross field. With `sizing`, the field's

@@ -1,9 +1,10 @@
 // Copyright (c) 2026 VVM contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// Volume mesh files for the front end: read by extension, written through a
-// temporary file in the target folder that is renamed at the end, so that a
-// failed run leaves no partial file and an existing one untouched.
+// Mesh files for the front end: volume meshes read by extension, volume and
+// surface meshes written through a temporary file in the target folder that is
+// renamed at the end, so that a failed run leaves no partial file and an
+// existing one untouched.
 
 #include "vvm_front_end.h"
 
@@ -11,6 +12,10 @@
 #include <CGAL/Hex_dominant_meshing/IO/write_MEDIT.h>
 #include <CGAL/Hex_dominant_meshing/IO/write_MSH.h>
 #include <CGAL/Hex_dominant_meshing/IO/write_VTU.h>
+#include <CGAL/IO/OBJ.h>
+#include <CGAL/IO/OFF.h>
+#include <CGAL/IO/PLY.h>
+#include <CGAL/IO/STL.h>
 
 #include <algorithm>
 #include <cctype>
@@ -95,6 +100,29 @@ void write_volume_mesh(const Volume_mesh& mesh, const std::string& path)
       IO::write_MSH(os, mesh);
     else
       IO::write_VTU(os, mesh, cell_quality_arrays(mesh));
+  });
+}
+
+bool is_surface_mesh_file(const std::string& path)
+{
+  const std::string e = lower_extension(path);
+  return e == ".off" || e == ".obj" || e == ".ply" || e == ".stl";
+}
+
+void write_surface_mesh(const Surface_mesh_result& mesh, const std::string& path)
+{
+  const std::string e = lower_extension(path);
+  if(!is_surface_mesh_file(path))
+    throw Input_error("unknown output extension in '" + path + "' (known: .off, .obj, .ply, .stl)");
+  write_atomically(path, [&](std::ostream& os) {
+    // CGAL::IO::write_polygon_mesh()'s choices: PLY and STL binary, text with every digit
+    const auto np = CGAL::parameters::stream_precision(17);
+    if(e == ".ply" || e == ".stl") CGAL::IO::set_binary_mode(os);
+    const bool written = e == ".off"   ? CGAL::IO::write_OFF(os, mesh.points, mesh.triangles, np)
+                         : e == ".obj" ? CGAL::IO::write_OBJ(os, mesh.points, mesh.triangles, np)
+                         : e == ".ply" ? CGAL::IO::write_PLY(os, mesh.points, mesh.triangles, np)
+                                       : CGAL::IO::write_STL(os, mesh.points, mesh.triangles, np);
+    if(!written) throw std::runtime_error("cannot write '" + path + "'");
   });
 }
 

@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <set>
 #include <sstream>
 
@@ -137,6 +138,24 @@ std::string json_line(const Run_report& r, const Mesh_quality& quality)
   if(r.boundary_distance_bound >= 0) os << ", \"boundary_distance_bound\": " << Json_number{r.boundary_distance_bound};
   if(r.boundary_hausdorff >= 0) os << ", \"boundary_hausdorff\": " << Json_number{r.boundary_hausdorff};
   os << "}\n";
+  return os.str();
+}
+
+std::string json_line(const Run_report& r, const Surface_quality& q)
+{
+  std::ostringstream os;
+  os.precision(17);
+  os << "{\"input\": " << json_string(r.input)
+     << ", \"model\": " << json_string(std::filesystem::path(r.input).stem().string())
+     << ", \"method\": " << json_string(r.method) << ", \"field\": " << json_string(r.field)
+     << ", \"n_vertices\": " << q.number_of_vertices << ", \"n_faces\": " << q.number_of_faces
+     << ", \"r6\": " << Json_number{q.r6} << ", \"xi_mean\": " << Json_number{q.xi_mean}
+     << ", \"xi_min\": " << Json_number{q.xi_min} << ", \"min_angle_metric_deg\": " << Json_number{q.min_angle}
+     << ", \"mean_min_angle_metric_deg\": " << Json_number{q.mean_min_angle}
+     << ", \"alignment_error_mean_deg\": " << Json_number{q.alignment_error_mean}
+     << ", \"is_closed_manifold\": " << (q.is_closed_manifold ? "true" : "false") << ", \"time_s\": " << r.optimize_time
+     << ", \"field_time_s\": " << r.mesh_time << ", \"run_time_s\": " << r.run_time
+     << ", \"time_limit_reached\": " << (r.time_limit_reached ? "true" : "false") << "}\n";
   return os.str();
 }
 

@@ -10,6 +10,7 @@
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Hex_dominant_mesh_3.h>
+#include <CGAL/Tetrahedral_lattice_meshing/surface_mesh_quality.h>
 
 #include <array>
 #include <cstddef>
@@ -44,8 +45,8 @@ struct Progress_event
 };
 typedef std::function<void(const Progress_event&)> Progress;
 
-/// a closed surface to mesh: a file (OFF, OBJ, PLY, STL, ...; for `tet_mesh()` also a
-/// labelled 3D image, .inr or .inr.gz), or points and polygons in memory
+/// a closed surface to mesh (for `surface_mesh()` also an open one): a file (OFF, OBJ, PLY, STL,
+/// ...; for `tet_mesh()` also a labelled 3D image, .inr or .inr.gz), or points and polygons in memory
 struct Surface_source
 {
   std::string path; ///< the file; empty: `points` and `polygons`
@@ -122,6 +123,19 @@ struct Field_options
   double time_limit = 0;       ///< seconds of generate_cross_field_3; 0: none
 };
 
+/// `vvm-mesh surface`
+struct Surface_options
+{
+  Mesh_size size;                  ///< the vertices sought, or the lattice's edge length in the field's metric
+  std::string field = "curvature"; ///< curvature, isotropic (its directions, one length each) or identity
+  double maximum_anisotropy = 3;   ///< curvature: the largest ratio of a frame's two lengths, >= 1
+  double maximum_size_ratio = 4;   ///< curvature, isotropic: the largest ratio of two frames' lengths, >= 1
+  double features_angle = 60;      ///< degrees; edges sharper than this are kept (0: none)
+  int threads = 0;
+  unsigned int seed = 0;
+  double time_limit = 0;           ///< seconds of the particles' rounds; 0: none
+};
+
 /// what a run made, for the summary and the JSON line
 struct Run_report
 {
@@ -134,6 +148,7 @@ struct Run_report
   double boundary_distance_bound = -1; ///< optimize: the bound the boundary was held to
   double boundary_hausdorff = -1;      ///< optimize: two-sided distance between the input's and the output's boundaries
   bool time_limit_reached = false;     ///< the time limit stopped the optimizer, lattice, merging or field
+  std::string field;                   ///< surface: the frame field (its time is `mesh_time`)
 };
 
 /// the quality table of a volume mesh
@@ -154,6 +169,17 @@ struct Mesh_quality
   double mean_hex_scaled_jacobian = 0;
 };
 
+/// the quality of a triangle mesh of a surface in its frame field's metric
+typedef CGAL::Tetrahedral_lattice_meshing::Surface_mesh_quality Surface_quality;
+
+/// a triangle mesh of a surface as files hold it, and its quality
+struct Surface_mesh_result
+{
+  std::vector<Point> points;
+  std::vector<std::array<std::size_t, 3>> triangles; ///< indices into `points`, outward as the input's
+  Surface_quality quality;
+};
+
 /// `vvm-mesh tet INPUT`: a closed surface (OFF, OBJ, PLY, STL, ...) or a labelled 3D image
 /// (.inr, .inr.gz): make_mesh_3 and an optimizer, or a lattice mesh
 Volume_mesh tet_mesh(const Surface_source& input, const Tet_options& options, const Progress& progress = {},
@@ -162,6 +188,15 @@ Volume_mesh tet_mesh(const Surface_source& input, const Tet_options& options, co
 /// `vvm-mesh hexdom INPUT`: a hex-dominant mesh of a closed surface
 Volume_mesh hex_dominant_mesh(const Surface_source& input, const Hex_dominant_options& options,
                               const Progress& progress = {}, Run_report* report = nullptr);
+
+/// `vvm-mesh surface INPUT`: a triangle mesh of a triangle surface (open or closed) whose vertices
+/// form a hexagonal lattice aligned with a tangent frame field (CGAL::make_lattice_surface_mesh):
+/// the principal curvature field, its isotropic variant or the identity projected; its quality
+/// measured in that field's metric. With `options.size.vertices`, one more run if the count is
+/// more than 5% off. Input_error on an unreadable file, no face, a face that is no triangle, a
+/// non-finite coordinate, faces that form no surface, a bad option.
+Surface_mesh_result surface_mesh(const Surface_source& input, const Surface_options& options,
+                                 const Progress& progress = {}, Run_report* report = nullptr);
 
 /// `vvm-mesh optimize MESH`: GSM on the tetrahedra of a mesh made by any mesher (labels kept)
 Volume_mesh optimize_tet_mesh(const Volume_mesh& mesh, const Optimize_options& options,
@@ -200,9 +235,16 @@ void write_volume_mesh(const Volume_mesh& mesh, const std::string& path);
 void write_text_file(const std::string& text, const std::string& path);
 /// whether `path` has one of the extensions write_volume_mesh() writes
 bool is_volume_mesh_file(const std::string& path);
+/// writes the triangles by extension (.off, .obj, .ply binary, .stl binary) as write_volume_mesh()
+/// writes its files
+void write_surface_mesh(const Surface_mesh_result& mesh, const std::string& path);
+/// whether `path` has one of the extensions write_surface_mesh() writes
+bool is_surface_mesh_file(const std::string& path);
 
 /// the figures of a run as one JSON line (the benchmark drivers' keys where they match)
 std::string json_line(const Run_report& report, const Mesh_quality& quality);
+/// the figures of a surface mesh's run as one JSON line (compare_surface_meshers' keys)
+std::string json_line(const Run_report& report, const Surface_quality& quality);
 
 } // namespace vvm
 

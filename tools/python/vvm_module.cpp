@@ -213,6 +213,7 @@ py::dict report_dict(const vvm::Run_report& r)
   if(r.boundary_distance_bound >= 0) d["boundary_distance_bound"] = r.boundary_distance_bound;
   if(r.boundary_hausdorff >= 0) d["boundary_hausdorff"] = r.boundary_hausdorff;
   d["time_limit_reached"] = r.time_limit_reached;
+  if(!r.field.empty()) d["field"] = r.field;
   return d;
 }
 
@@ -271,6 +272,57 @@ py::dict hex_dominant(const py::object& surface, std::size_t particles, double s
   const vvm::Volume_mesh mesh =
       without_gil(progress, [&](const vvm::Progress& p) { return vvm::hex_dominant_mesh(source, o, p, &report); });
   return result(mesh, report);
+}
+
+py::dict surface_quality_dict(const vvm::Surface_quality& q)
+{
+  py::dict d;
+  d["vertices"] = q.number_of_vertices;
+  d["faces"] = q.number_of_faces;
+  d["r6"] = q.r6;
+  d["xi_mean"] = q.xi_mean;
+  d["xi_min"] = q.xi_min;
+  d["min_angle"] = q.min_angle;
+  d["mean_min_angle"] = q.mean_min_angle;
+  d["alignment_error_mean"] = q.alignment_error_mean;
+  d["is_closed_manifold"] = q.is_closed_manifold;
+  return d;
+}
+
+py::dict surface_mesh(const py::object& surface, std::size_t vertices, double size, const std::string& field,
+                      double maximum_anisotropy, double maximum_size_ratio, double features_angle, int threads,
+                      unsigned int seed, double time_limit, const py::object& progress)
+{
+  const vvm::Surface_source source = surface_source(surface);
+  vvm::Surface_options o;
+  o.size = mesh_size(size, vertices);
+  o.field = field;
+  o.maximum_anisotropy = maximum_anisotropy;
+  o.maximum_size_ratio = maximum_size_ratio;
+  o.features_angle = features_angle;
+  o.threads = threads;
+  o.seed = seed;
+  o.time_limit = time_limit;
+  vvm::Run_report report;
+  const vvm::Surface_mesh_result mesh =
+      without_gil(progress, [&](const vvm::Progress& p) { return vvm::surface_mesh(source, o, p, &report); });
+  py::array_t<double> points({mesh.points.size(), std::size_t(3)});
+  py::array_t<std::int64_t> triangles({mesh.triangles.size(), std::size_t(3)});
+  auto p = points.mutable_unchecked<2>();
+  auto t = triangles.mutable_unchecked<2>();
+  for(std::size_t i = 0; i < mesh.points.size(); ++i) {
+    p(i, 0) = mesh.points[i].x();
+    p(i, 1) = mesh.points[i].y();
+    p(i, 2) = mesh.points[i].z();
+  }
+  for(std::size_t i = 0; i < mesh.triangles.size(); ++i)
+    for(std::size_t j = 0; j < 3; ++j) t(i, j) = std::int64_t(mesh.triangles[i][j]);
+  py::dict d;
+  d["points"] = points;
+  d["triangles"] = triangles;
+  d["quality"] = surface_quality_dict(mesh.quality);
+  d["report"] = report_dict(report);
+  return d;
 }
 
 py::dict optimize(const Double_array& points, const Index_array& cell_types, const Index_array& connectivity,
@@ -434,6 +486,9 @@ PYBIND11_MODULE(_vvm, m)
   m.def("hex_dominant", &hex_dominant, arg("surface"), arg("particles"), arg("size"), arg("q_bound"),
         arg("boundary_distance"), arg("features_angle"), arg("field"), arg("sizing"), arg("threads"), arg("seed"), arg("time_limit"),
         arg("progress"));
+  m.def("surface_mesh", &surface_mesh, arg("surface"), arg("vertices"), arg("size"), arg("field"),
+        arg("maximum_anisotropy"), arg("maximum_size_ratio"), arg("features_angle"), arg("threads"), arg("seed"),
+        arg("time_limit"), arg("progress"));
   m.def("optimize", &optimize, arg("points"), arg("cell_types"), arg("connectivity"), arg("labels"),
         arg("features_angle"), arg("fixed_boundary"), arg("boundary_distance"), arg("threads"), arg("seed"),
         arg("time_limit"), arg("progress"));

@@ -31,6 +31,8 @@ inline const char* main_usage =
     "  optimize MESH -o OUT   GSM on a tet mesh made by any mesher (TetGen, Gmsh, ...), labels kept\n"
     "  quality MESH           the quality table of a tet or hex-dominant mesh\n"
     "  field INPUT -o FIELD   the boundary-aligned cross field of a closed surface (text format)\n"
+    "  surface INPUT -o OUT   triangle mesh of a surface on a hexagonal lattice aligned with its\n"
+    "                         principal curvature directions (.off, .obj, .ply, .stl)\n"
     "\n"
     "Mesh files: .mesh (MEDIT), .msh (Gmsh; 2.2 and 4.1 read, 4.1 written, physical groups =\n"
     "subdomains), .vtu (VTK; written with the per-cell quality). Exit codes: 0 done, 2 bad argument\n"
@@ -119,6 +121,30 @@ inline const char* field_usage =
     "  --size H, --vertices N  the size of that tet mesh (default 10000 vertices)\n"
     "  --time-limit S      stop the field's smoothing after S seconds (default 0: none)\n";
 
+inline const char* surface_usage =
+    "usage: vvm-mesh surface INPUT -o OUT [--vertices N | --size H] [--field curvature|isotropic|identity]\n"
+    "                        [--maximum-anisotropy A] [--maximum-size-ratio R] [--features-angle DEG]\n"
+    "                        [--threads N] [--seed N] [--time-limit S] [--json FILE] [--quiet]\n"
+    "  INPUT               a triangle surface, open or closed (OFF, OBJ, PLY, STL, ...)\n"
+    "  -o OUT              the triangle mesh: .off, .obj, .ply or .stl (binary)\n"
+    "  --vertices N        the number of vertices sought (default 10000; within about 5%)\n"
+    "  --size H            the lattice's edge length in the field's metric instead (curvature: the\n"
+    "                      edges are about H times 1/sqrt|k|; identity: H)\n"
+    "  --field F           curvature (default): along the principal curvature directions, the edges\n"
+    "                      1/sqrt|k| long, so that each leaves the surface by about as much;\n"
+    "                      isotropic: the same directions, one length; identity: the x axis\n"
+    "                      projected, one length everywhere\n"
+    "  --maximum-anisotropy A  curvature: the largest ratio of an edge across to one along (default 3)\n"
+    "  --maximum-size-ratio R  curvature, isotropic: the largest ratio of two edge lengths (default 4)\n"
+    "  --features-angle D  keep the edges of the surface sharper than D degrees (default 60; 0: none);\n"
+    "                      its borders are always kept\n"
+    "  --time-limit S      stop the particles after S seconds, with a valid mesh (default 0: none)\n"
+    "  --threads N, --seed N, --json FILE, --quiet  as for tet\n"
+    "  The summary gives the quality in the field's metric: r6 (the share of degree-6 vertices off the\n"
+    "  sharp edges), xi (4 sqrt(3) area / (perimeter x longest edge), 1 for equilateral), the smallest\n"
+    "  angle, the edges' angle to the lattice's directions.\n"
+    "example: vvm-mesh surface data/surfaces/torus.off -o torus.off --vertices 3000\n";
+
 /// a command line of vvm-mesh, parsed
 struct Arguments
 {
@@ -175,6 +201,7 @@ inline const char* usage_of(const std::string& command)
   if(command == "optimize") return optimize_usage;
   if(command == "quality") return quality_usage;
   if(command == "field") return field_usage;
+  if(command == "surface") return surface_usage;
   return main_usage;
 }
 
@@ -195,7 +222,9 @@ inline Arguments parse(int argc, const char* const* argv)
                   "--sizing", "--threads", "--seed", "--time-limit"}},
       {"optimize", {"--features-angle", "--boundary-distance", "--threads", "--seed", "--time-limit"}},
       {"quality", {}},
-      {"field", {"--size", "--vertices", "--features-angle", "--seed", "--time-limit"}}};
+      {"field", {"--size", "--vertices", "--features-angle", "--seed", "--time-limit"}},
+      {"surface", {"--vertices", "--size", "--field", "--maximum-anisotropy", "--maximum-size-ratio", "--features-angle",
+                   "--threads", "--seed", "--time-limit"}}};
   const auto known = options.find(a.command);
   if(known == options.end()) throw Input_error("unknown command '" + a.command + "'");
   for(int i = 2; i < argc; ++i) {
@@ -275,6 +304,22 @@ inline vvm::Hex_dominant_options hex_dominant_options(const Arguments& a)
   o.features_angle = number<double>(a, "--features-angle", o.features_angle);
   o.field = text(a, "--field", o.field);
   o.sizing = text(a, "--sizing", o.sizing);
+  o.threads = number<int>(a, "--threads", 0);
+  o.seed = seed(a);
+  o.time_limit = time_limit(a);
+  return o;
+}
+
+/// the options of `vvm-mesh surface`
+inline vvm::Surface_options surface_options(const Arguments& a)
+{
+  vvm::Surface_options o;
+  o.size.size = number<double>(a, "--size", 0.);
+  o.size.vertices = count(a, "--vertices", o.size.vertices);
+  o.field = text(a, "--field", o.field);
+  o.maximum_anisotropy = number<double>(a, "--maximum-anisotropy", o.maximum_anisotropy);
+  o.maximum_size_ratio = number<double>(a, "--maximum-size-ratio", o.maximum_size_ratio);
+  o.features_angle = number<double>(a, "--features-angle", o.features_angle);
   o.threads = number<int>(a, "--threads", 0);
   o.seed = seed(a);
   o.time_limit = time_limit(a);

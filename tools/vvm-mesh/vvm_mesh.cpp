@@ -3,7 +3,8 @@
 //
 // vvm-mesh: VVM from the command line. Mesh a closed surface or a labelled
 // image with tetrahedra (GSM, lattices) or hex-dominant cells, clean up a tet
-// mesh made by any mesher, measure any mesh, export a cross field.
+// mesh made by any mesher, measure any mesh, export a cross field, remesh a
+// surface with field-aligned triangles.
 // Exit codes: 0 done, 2 bad argument or input, 1 a run that failed midway.
 
 #include "command_line.h"
@@ -83,7 +84,9 @@ void check_output(const Arguments& a)
       throw Input_error("cannot write '" + out + "': no folder '" + p.parent_path().string() + "'");
     if(fs::is_directory(p, error)) throw Input_error("cannot write '" + out + "': it is a folder");
   }
-  if(a.command != "quality" && a.command != "field" && !vvm::is_volume_mesh_file(a.output))
+  if(a.command == "surface" && !vvm::is_surface_mesh_file(a.output))
+    throw Input_error("unknown output extension in '" + a.output + "' (known: .off, .obj, .ply, .stl)");
+  if(a.command != "quality" && a.command != "field" && a.command != "surface" && !vvm::is_volume_mesh_file(a.output))
     throw Input_error("unknown output extension in '" + a.output + "' (known: .mesh, .msh, .vtu)");
   if(!a.json.empty() && (fs::path(a.json) == fs::path(a.output) || fs::path(a.json) == fs::path(a.input)))
     throw Input_error("--json '" + a.json + "' would overwrite the input or the output");
@@ -132,6 +135,21 @@ void print_summary(const vvm::Mesh_quality& q, const vvm::Run_report& r, bool fu
   std::fflush(stdout);
 }
 
+void print_surface_summary(const vvm::Surface_quality& q, const vvm::Run_report& r)
+{
+  std::printf("%-26s %zu\n", "vertices", q.number_of_vertices);
+  std::printf("%-26s %zu\n", "faces", q.number_of_faces);
+  std::printf("in the %s field's metric:\n", r.field.c_str());
+  std::printf("%-26s %.3f\n", "degree-6 vertices (r6)", q.r6);
+  std::printf("%-26s %.3f / %.3f\n", "xi mean / min", q.xi_mean, q.xi_min);
+  std::printf("%-26s %.2f (mean smallest %.2f)\n", "smallest angle", q.min_angle, q.mean_min_angle);
+  std::printf("%-26s %.2f\n", "edges off the lattice", q.alignment_error_mean);
+  std::printf("%-26s %s\n", "closed manifold", q.is_closed_manifold ? "yes" : "no");
+  std::printf("%-26s %.2f s (field %.2f s, lattice %.2f s)%s\n", "time", r.run_time, r.mesh_time, r.optimize_time,
+              r.time_limit_reached ? ", stopped at the time limit" : "");
+  std::fflush(stdout);
+}
+
 int run(const Arguments& a)
 {
   check_output(a);
@@ -145,6 +163,15 @@ int run(const Arguments& a)
     vvm::write_text_file(field, a.output);
     std::printf("cross field written to %s (%.2f s%s)\n", a.output.c_str(), report.mesh_time + report.optimize_time,
                 report.time_limit_reached ? ", smoothing stopped at the time limit" : "");
+    return 0;
+  }
+  if(a.command == "surface") {
+    const vvm::Surface_mesh_result surface = vvm::surface_mesh(a.input, surface_options(a), progress, &report);
+    printer.finish();
+    vvm::write_surface_mesh(surface, a.output);
+    if(!a.json.empty()) vvm::write_text_file(vvm::json_line(report, surface.quality), a.json);
+    std::printf("surface written to %s\n", a.output.c_str());
+    print_surface_summary(surface.quality, report);
     return 0;
   }
   if(a.command == "tet") {

@@ -4,8 +4,9 @@
 
 Tetrahedral meshes whose smallest dihedral angles are 25-30 degrees (make_mesh_3 and
 GSM, Gradient-based Shape Matching), GSM on a tetrahedral mesh made by any mesher,
-field-aligned BCC/FCC lattice meshes, and hex-dominant meshes. The same functions, options
-and results as the ``vvm-mesh`` program.
+field-aligned BCC/FCC lattice meshes, hex-dominant meshes, and field-aligned triangle meshes of
+surfaces (:func:`surface_mesh`). The same functions, options and results as the ``vvm-mesh``
+program.
 
 Surfaces are file names (OFF, OBJ, PLY, STL, ...) or ``(vertices, faces)`` pairs of
 arrays; volume meshes are ``meshio.Mesh`` objects or ``(points, tetrahedra, labels)``
@@ -42,8 +43,8 @@ import numpy as np
 from . import _vvm
 from ._vvm import __version__
 
-__all__ = ["tet_mesh", "hex_dominant", "optimize", "cross_field", "quality", "read", "write", "FrameField",
-           "ProgressEvent", "__version__"]
+__all__ = ["tet_mesh", "hex_dominant", "surface_mesh", "optimize", "cross_field", "quality", "read", "write",
+           "FrameField", "ProgressEvent", "__version__"]
 
 ProgressEvent = collections.namedtuple("ProgressEvent", "stage fraction detail elapsed")
 ProgressEvent.__doc__ = """What a run reports as it goes: the stage (e.g. ``"make_mesh_3"``, ``"gsm"``,
@@ -322,6 +323,45 @@ def hex_dominant(surface, particles=None, size=None, q_bound=0.5, boundary_dista
                                    _angle(features_angle), field_path, str(sizing), _threads(threads), _seed(seed),
                                    _time_limit(time_limit), _progress(progress))
     return _to_meshio(arrays)
+
+
+def surface_mesh(surface, vertices=None, size=None, field="curvature", maximum_anisotropy=3.0, maximum_size_ratio=4.0,
+                 features_angle=None, threads=None, seed=0, progress=None, time_limit=None):
+    """A triangle mesh of a triangle surface, open or closed, whose vertices form a hexagonal
+    lattice aligned with a tangent frame field (``vvm-mesh surface``).
+
+    ``surface``: a file (OFF, OBJ, PLY, STL, ...) or a ``(vertices, faces)`` pair: an (n, 3)
+    float array and an (m, 3) index array. ``vertices`` (default 10000; within about 5%) or
+    ``size`` (the lattice's edge length in the field's metric). ``field``: ``"curvature"`` (the
+    principal curvature directions, edges 1/sqrt|k| long), ``"isotropic"`` (the same
+    directions, one length) or ``"identity"`` (the x axis projected, one length everywhere);
+    ``maximum_anisotropy`` (curvature: the largest ratio of a frame's two lengths, >= 1) and
+    ``maximum_size_ratio`` (the largest ratio of two lengths, >= 1) bound it. Edges sharper
+    than ``features_angle`` (degrees, default 60; 0: none) and the borders are kept.
+    ``threads``, ``seed``, ``progress`` as in :func:`tet_mesh`;
+    ``time_limit``: seconds of the particles, None for none (``mesh.info["time_limit_reached"]``).
+
+    Returns a ``meshio.Mesh`` with one ``triangle`` block; ``mesh.info`` holds the run's report
+    and, as ``mesh.info["quality"]``, the quality in the field's metric: ``vertices``,
+    ``faces``, ``r6`` (the share of degree-6 vertices off the borders and sharp edges),
+    ``xi_mean``, ``xi_min`` (4 sqrt(3) area / (perimeter x longest edge), 1 for equilateral),
+    ``min_angle``, ``mean_min_angle`` (degrees), ``alignment_error_mean`` (degrees off the
+    lattice's directions) and ``is_closed_manifold``. Raises ``ValueError`` on bad input (no
+    face, faces that are not triangles, NaN, an unknown field, bad sizes).
+
+    Example::
+
+        mesh = vvm.surface_mesh("data/surfaces/torus.off", vertices=3000)
+        print(mesh.info["quality"]["r6"])
+        mesh.write("torus_lattice.off")
+    """
+    count, edge = _size(vertices, size, "vertices", 10000)
+    arrays = _vvm.surface_mesh(_surface(surface), count, edge, str(field), float(maximum_anisotropy),
+                               float(maximum_size_ratio), _angle(features_angle), _threads(threads), _seed(seed),
+                               _time_limit(time_limit), _progress(progress))
+    mesh = _meshio().Mesh(arrays["points"], [("triangle", arrays["triangles"])])
+    mesh.info = dict(arrays["report"], quality=arrays["quality"])
+    return mesh
 
 
 def optimize(mesh, features_angle=None, fixed_boundary=False, boundary_distance=None, threads=None, seed=0,
