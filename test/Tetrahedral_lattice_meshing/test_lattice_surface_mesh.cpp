@@ -3,9 +3,9 @@
 //
 // make_lattice_surface_mesh(): the hexagonal lattice on a plane with a constant field,
 // closed manifold meshes of a sphere and a torus whose vertices lie on the surface (the same
-// with one thread as with two), the
-// sharp edges of a cube kept as mesh edges, bad inputs refused; the principal curvature
-// field of a torus against its closed form.
+// with one thread as with two), the sharp edges of a cube kept as mesh edges, no flat triangle
+// along fandisk's, bad inputs refused; the principal curvature field of a torus against its
+// closed form.
 
 #include "lattice_test_support.h"
 
@@ -275,6 +275,27 @@ void test_cube_sharp_edges()
   VVM_CHECK(q.r6 > 0.9);
 }
 
+// fandisk in its curvature field, sharp edges at 60 degrees: a closed manifold with no flat
+// triangle along a sharp edge (with seeds 0 and 4, holes filled along a sharp edge past a
+// particle left triangles of 0.3 and 4e-14 degrees in the metric before their chords were flipped)
+void test_fandisk_sharp_edges()
+{
+  Surface_mesh surface;
+  VVM_CHECK(CGAL::IO::read_polygon_mesh(data_file("fandisk.off"), surface));
+  const auto field = CGAL::Frame_fields::principal_curvature_frame_field(surface);
+  for(unsigned int seed : {0u, 4u}) {
+    TLM::Lattice_surface_mesh_report report;
+    const Surface_mesh mesh = CGAL::make_lattice_surface_mesh(
+        surface, field, TLM::parameters::report(&report, TLM::parameters::number_of_particles(1500, CGAL::parameters::random_seed(seed))));
+    const TLM::Surface_mesh_quality q = TLM::surface_mesh_quality(mesh, field);
+    std::cout << "  fandisk, seed " << seed << ": " << q.number_of_vertices << " vertices, r6 " << q.r6 << ", xi mean "
+              << q.xi_mean << ", smallest angle " << q.min_angle << ", " << report.number_of_filled_holes
+              << " holes filled, closed manifold " << q.is_closed_manifold << "\n";
+    VVM_CHECK(q.is_closed_manifold);
+    VVM_CHECK(q.min_angle > 1);
+  }
+}
+
 // bad inputs: a clear exception before any work, never a crash
 void test_bad_inputs()
 {
@@ -356,6 +377,7 @@ int main(int argc, char** argv)
       {"plane_hexagonal_lattice", test_plane_hexagonal_lattice},
       {"sphere_and_torus", test_sphere_and_torus},
       {"cube_sharp_edges", test_cube_sharp_edges},
+      {"fandisk_sharp_edges", test_fandisk_sharp_edges},
       {"bad_inputs", test_bad_inputs},
       {"curvature_field", test_curvature_field}});
 }

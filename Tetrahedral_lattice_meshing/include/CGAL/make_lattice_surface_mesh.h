@@ -51,7 +51,7 @@ struct Lattice_surface_mesh_report
   std::size_t number_of_sharp_edge_particles = 0; ///< on the feature curves, corners included
   double edge_length = 0;                          ///< \f$ l^* \f$, the lattice's edge in the imagined space
   int number_of_rounds = 0;                        ///< the particles' rounds, all levels
-  std::size_t number_of_flips = 0;                 ///< to make the triangles Delaunay in the field's metric
+  std::size_t number_of_flips = 0;                 ///< to make the triangles Delaunay in the field's metric, and to undo flat ones
   /// holes of the restricted Delaunay triangles filled (`Polygon_mesh_processing::triangulate_hole()`):
   /// a lattice defect near a sharp edge can leave a particle so near it that no triangle of its
   /// patch reaches the edge there
@@ -274,7 +274,8 @@ make_lattice_surface_mesh(const TriangleMesh& surface, const FrameField& field,
       rep.number_of_filled_holes += filled.empty() ? 0 : 1;
     }
   }
-  rep.number_of_flips = TLM::internal::flip_to_metric_Delaunay(mesh, field, is_feature);
+  rep.number_of_flips = TLM::internal::flip_flat_triangles(mesh, is_feature);
+  rep.number_of_flips += TLM::internal::flip_to_metric_Delaunay(mesh, field, is_feature);
   rep.triangle_time = timer.time() - timer_before_triangles;
   return mesh;
 }

@@ -17,6 +17,8 @@
 #ifndef CGAL_TETRAHEDRAL_LATTICE_MESHING_INTERNAL_RESTRICTED_DELAUNAY_SURFACE_H
 #define CGAL_TETRAHEDRAL_LATTICE_MESHING_INTERNAL_RESTRICTED_DELAUNAY_SURFACE_H
 
+#include <CGAL/Tetrahedral_lattice_meshing/internal/Surface_metric_flips.h>
+
 #include <CGAL/Delaunay_triangulation_3.h>
 #include <CGAL/Orthogonal_k_neighbor_search.h>
 #include <CGAL/Search_traits_3.h>
@@ -52,13 +54,7 @@ std::vector<std::array<std::size_t, 3>> restricted_Delaunay_triangles(const std:
   typedef CGAL::Delaunay_triangulation_3<K, Tds> Dt;
   typedef typename K::Point_3 Point_3;
   const auto& triangles = boundary.triangles();
-  // flat: a circumradius over 1000 times the shortest edge
-  auto is_flat = [&](const std::size_t v[3]) {
-    const Eigen::Vector3d a = points[v[0]], b = points[v[1]], c = points[v[2]];
-    const double ab = (b - a).norm(), bc = (c - b).norm(), ca = (a - c).norm(), twice_area = (b - a).cross(c - a).norm();
-    // R = ab bc ca / (4 area)
-    return !(ab * bc * ca < 2000 * twice_area * (std::min)({ab, bc, ca}));
-  };
+  auto is_flat = [&](const std::size_t v[3]) { return is_flat_triangle(points[v[0]], points[v[1]], points[v[2]]); };
   typedef std::array<std::size_t, 3> Key; // sorted
   auto key_of = [](std::size_t a, std::size_t b, std::size_t c) {
     Key k = {a, b, c};
