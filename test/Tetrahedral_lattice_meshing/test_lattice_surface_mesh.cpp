@@ -4,8 +4,8 @@
 // make_lattice_surface_mesh(): the hexagonal lattice on a plane with a constant field,
 // closed manifold meshes of a sphere and a torus whose vertices lie on the surface (the same
 // with one thread as with two), the sharp edges of a cube kept as mesh edges, no flat triangle
-// along fandisk's, bad inputs refused; the principal curvature field of a torus against its
-// closed form.
+// along fandisk's, no hole in a mesh finer than its coarse input, non-manifold triangles removed,
+// bad inputs refused; the principal curvature field of a torus against its closed form.
 
 #include "lattice_test_support.h"
 
@@ -296,6 +296,47 @@ void test_fandisk_sharp_edges()
   }
 }
 
+// sphere966, an input far coarser than the output (966 vertices for 10,000): particles of one
+// flat input triangle nearly on one circle make near-flat Delaunay tetrahedra whose rounded
+// circumcentres move the facets' duals off the surface; before the facets were tested along
+// their exact dual lines too, 300 holes were filled and the smallest angle was 0 degrees
+void test_coarse_sphere()
+{
+  Surface_mesh surface;
+  VVM_CHECK(CGAL::IO::read_polygon_mesh(data_file("sphere966.off"), surface));
+  const auto field = CGAL::Frame_fields::principal_curvature_frame_field(surface);
+  TLM::Lattice_surface_mesh_report report;
+  const Surface_mesh mesh = CGAL::make_lattice_surface_mesh(
+      surface, field, TLM::parameters::report(&report, TLM::parameters::number_of_particles(10000)));
+  const TLM::Surface_mesh_quality q = TLM::surface_mesh_quality(mesh, field);
+  std::cout << "  sphere966: " << q.number_of_vertices << " vertices, r6 " << q.r6 << ", xi mean " << q.xi_mean
+            << ", smallest angle " << q.min_angle << ", " << report.number_of_filled_holes
+            << " holes filled, closed manifold " << q.is_closed_manifold << "\n";
+  VVM_CHECK(q.is_closed_manifold);
+  VVM_CHECK_EQUAL(report.number_of_filled_holes, std::size_t(0));
+  VVM_CHECK(q.min_angle > 20);
+  VVM_CHECK(q.r6 > 0.85);
+}
+
+// remove_non_manifold_triangles() on hand-made soups: the triangles of an edge of three, the
+// smaller fan of a vertex, and a fan split in two by the removal of an edge's triangles
+void test_non_manifold_triangles()
+{
+  using TLM::internal::remove_non_manifold_triangles;
+  std::vector<Face> edge = {{0, 1, 2}, {0, 1, 3}, {1, 0, 4}, {2, 3, 5}};
+  VVM_CHECK_EQUAL(remove_non_manifold_triangles(edge), std::size_t(3));
+  VVM_CHECK(edge == std::vector<Face>({{2, 3, 5}}));
+  std::vector<Face> fans = {{0, 5, 6}, {0, 1, 2}, {0, 2, 3}, {0, 3, 4}};
+  VVM_CHECK_EQUAL(remove_non_manifold_triangles(fans), std::size_t(1));
+  VVM_CHECK(fans == std::vector<Face>({{0, 1, 2}, {0, 2, 3}, {0, 3, 4}}));
+  std::vector<Face> split = {{0, 1, 2}, {0, 2, 3}, {0, 3, 4}, {2, 7, 3}, {3, 2, 8}};
+  VVM_CHECK_EQUAL(remove_non_manifold_triangles(split), std::size_t(4));
+  VVM_CHECK(split == std::vector<Face>({{0, 1, 2}}));
+  std::vector<Face> manifold = fans;
+  VVM_CHECK_EQUAL(remove_non_manifold_triangles(manifold), std::size_t(0));
+  VVM_CHECK(manifold == fans);
+}
+
 // bad inputs: a clear exception before any work, never a crash
 void test_bad_inputs()
 {
@@ -378,6 +419,8 @@ int main(int argc, char** argv)
       {"sphere_and_torus", test_sphere_and_torus},
       {"cube_sharp_edges", test_cube_sharp_edges},
       {"fandisk_sharp_edges", test_fandisk_sharp_edges},
+      {"coarse_sphere", test_coarse_sphere},
+      {"non_manifold_triangles", test_non_manifold_triangles},
       {"bad_inputs", test_bad_inputs},
       {"curvature_field", test_curvature_field}});
 }

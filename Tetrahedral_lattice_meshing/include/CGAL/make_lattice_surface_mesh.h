@@ -57,8 +57,10 @@ struct Lattice_surface_mesh_report
   /// patch reaches the edge there
   std::size_t number_of_filled_holes = 0;
   /// the restricted Delaunay triangles formed a closed 2-manifold (or, on a surface with borders, a
-  /// 2-manifold with borders); if not, the mesh has its non-manifold vertices split
+  /// 2-manifold with borders); if not, the triangles on non-manifold edges and vertices were
+  /// removed, and their holes filled
   bool is_manifold = false;
+  std::size_t number_of_non_manifold_triangles = 0; ///< removed from the restricted Delaunay triangles
   double particle_time = 0;                        ///< seconds
   double triangle_time = 0;                        ///< seconds: restricted Delaunay triangles and flips
   bool time_limit_reached = false;
@@ -231,7 +233,10 @@ make_lattice_surface_mesh(const TriangleMesh& surface, const FrameField& field,
       TLM::internal::restricted_Delaunay_triangles<K>(xyz, patches, boundary, 1e-6 * l);
   std::vector<Point_3> soup_points(particles.points);
   rep.is_manifold = PMP::is_polygon_soup_a_polygon_mesh(triangles);
-  if(!rep.is_manifold) PMP::orient_polygon_soup(soup_points, triangles); // splits the non-manifold vertices
+  if(!rep.is_manifold) {
+    rep.number_of_non_manifold_triangles = TLM::internal::remove_non_manifold_triangles(triangles);
+    if(!PMP::is_polygon_soup_a_polygon_mesh(triangles)) PMP::orient_polygon_soup(soup_points, triangles);
+  }
   Mesh mesh;
   PMP::polygon_soup_to_polygon_mesh(soup_points, triangles, mesh);
   // the particles not in any triangle
