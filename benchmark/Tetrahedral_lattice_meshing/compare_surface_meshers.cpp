@@ -6,11 +6,11 @@
 // vertex count, measured in the field's metric (dissertation section 4.3.4).
 
 #include <command_line.h>
+#include <frame_fields.h>
 #include <json_lines.h>
 #include <table.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Frame_fields/principal_curvature_frame_field.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 #include <CGAL/Polygon_mesh_processing/detect_features.h>
 #include <CGAL/Polygon_mesh_processing/distance.h>
@@ -37,12 +37,13 @@ namespace PMP = CGAL::Polygon_mesh_processing;
 using namespace vvm_benchmark;
 
 const char* usage =
-    "usage: compare_surface_meshers INPUT [--vertices N] [--field curvature|isotropic|identity]\n"
+    "usage: compare_surface_meshers INPUT [--vertices N] [--field curvature|isotropic|identity|FILE]\n"
     "         [--maximum-anisotropy A] [--maximum-size-ratio R] [--features-angle DEG] [--methods lattice,isotropic_remeshing]\n"
     "         [--threads N] [--seed N] [--json FILE] [--out-dir DIR] [--verbose]\n"
     "  INPUT: a triangle mesh file (OFF, OBJ, PLY, STL...), e.g. data/surfaces/torus.off\n"
     "  --field curvature: principal curvature directions, lengths 1/sqrt|k| (default);\n"
-    "          isotropic: the same directions, one length; identity: x projected, unit lengths\n"
+    "          isotropic: the same directions, one length; identity: x projected, unit lengths;\n"
+    "          FILE: a frame-field text file (a frame per vertex, or a volume field) on the tangent planes\n"
     "  One JSON line per method: model, method, field, n_vertices, n_faces, r6, xi_mean, xi_min,\n"
     "  min_angle_metric_deg, mean_min_angle_metric_deg, alignment_error_mean_deg, hausdorff,\n"
     "  is_closed_manifold, time_s; <model>_<method>.off in the out dir.\n";
@@ -62,7 +63,10 @@ Options parse(int argc, char** argv)
   Command_line c(argc, argv, usage);
   while(c.next()) {
     if(c.is("--vertices")) o.vertices = c.number_in<std::size_t>(10, 10000000);
-    else if(c.is("--field")) o.field = c.one_of({"curvature", "isotropic", "identity"});
+    else if(c.is("--field")) {
+      o.field = c.value();
+      vvm::internal::check_surface_field(o.field);
+    }
     else if(c.is("--maximum-anisotropy")) o.maximum_anisotropy = c.number_in<double>(1, 100);
     else if(c.is("--maximum-size-ratio")) o.maximum_size_ratio = c.number_in<double>(1, 1000);
     else if(c.is("--methods")) {
@@ -96,15 +100,8 @@ Field make_field(const Surface_mesh& m, const Options& o)
     for(auto v : CGAL::vertices_around_face(m.halfedge(f), m)) t[std::size_t(k++)] = std::size_t(v);
     faces.push_back(t);
   }
-  namespace FF = CGAL::Frame_fields;
-  if(o.field == "identity")
-    return Field::from_tangent_frames(points, faces, [](const Eigen::Vector3d&, const Eigen::Vector3d&) { return FF::Tangent_frame(); },
-                                      o.features_angle);
-  return FF::principal_curvature_frame_field<K>(
-      points, faces,
-      FF::parameters::maximum_anisotropy(o.field == "isotropic" ? 1. : o.maximum_anisotropy,
-                                         FF::parameters::maximum_size_ratio(o.maximum_size_ratio,
-                                                                            FF::parameters::features_angle(o.features_angle))));
+  return vvm::internal::surface_frame_field(points, faces, o.field, o.maximum_anisotropy, o.maximum_size_ratio,
+                                            o.features_angle);
 }
 
 // isotropic remeshing at about `n` vertices: the target length of equilateral triangles of that

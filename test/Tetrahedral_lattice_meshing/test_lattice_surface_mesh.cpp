@@ -5,10 +5,13 @@
 // closed manifold meshes of a sphere and a torus whose vertices lie on the surface (the same
 // with one thread as with two), the sharp edges of a cube kept as mesh edges, no flat triangle
 // along fandisk's, no hole in a mesh finer than its coarse input, non-manifold triangles removed,
-// bad inputs refused; the principal curvature field of a torus against its closed form.
+// bad inputs refused; the principal curvature field of a torus against its closed form; a
+// field read from the frame-field text format.
 
 #include "lattice_test_support.h"
 
+#include <CGAL/Frame_fields/Constant_frame_field_3.h>
+#include <CGAL/Frame_fields/IO/frame_field_text_format.h>
 #include <CGAL/Frame_fields/Surface_frame_field_3.h>
 #include <CGAL/Frame_fields/principal_curvature_frame_field.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
@@ -19,6 +22,7 @@
 #include <CGAL/AABB_tree.h>
 
 #include <map>
+#include <sstream>
 
 namespace {
 
@@ -83,6 +87,22 @@ Soup sphere(int k)
       finer.push_back({a, b, c});
     }
     s.faces = finer;
+  }
+  return s;
+}
+
+// the triangle mesh in the data file `name`
+Soup read_soup(const std::string& name)
+{
+  Soup s;
+  Surface_mesh m;
+  VVM_CHECK(CGAL::IO::read_polygon_mesh(data_file(name), m));
+  s.points.assign(m.points().begin(), m.points().end());
+  for(auto f : m.faces()) {
+    Face face;
+    int k = 0;
+    for(auto v : CGAL::vertices_around_face(m.halfedge(f), m)) face[std::size_t(k++)] = std::size_t(v);
+    s.faces.push_back(face);
   }
   return s;
 }
@@ -205,18 +225,7 @@ void test_sphere_and_torus()
   check_closed_on_surface("sphere", s, sphere_field, 3000, 2);
   // the torus of data/surfaces/torus.off (radii 1 and 0.35 about z), its principal directions:
   // along the ring and around the tube
-  Soup t;
-  {
-    Surface_mesh m;
-    VVM_CHECK(CGAL::IO::read_polygon_mesh(data_file("surfaces/torus.off"), m));
-    t.points.assign(m.points().begin(), m.points().end());
-    for(auto f : m.faces()) {
-      Face face;
-      int k = 0;
-      for(auto v : CGAL::vertices_around_face(m.halfedge(f), m)) face[std::size_t(k++)] = std::size_t(v);
-      t.faces.push_back(face);
-    }
-  }
+  const Soup t = read_soup("surfaces/torus.off");
   const Surface_field torus_field = Surface_field::from_tangent_frames(t.points, t.faces, [](const Eigen::Vector3d& c, const Eigen::Vector3d&) {
     CGAL::Frame_fields::Tangent_frame f;
     f.direction = Eigen::Vector3d(-c[1], c[0], 0);
@@ -410,6 +419,55 @@ void test_curvature_field()
   VVM_CHECK(throws_invalid_argument([&] { CGAL::Frame_fields::principal_curvature_frame_field(surface, CGAL::Frame_fields::parameters::maximum_anisotropy(0.5)); }, "anisotropy"));
 }
 
+// Surface_frame_field_3::from_frame_field(): frames given per vertex of the torus in the
+// frame-field text format come back as from_tangent_frames() makes them; of a volume field's
+// axes, the two nearest to the tangent plane are kept
+void test_field_from_file()
+{
+  const Soup t = read_soup("surfaces/torus.off");
+  auto ring = [](const Eigen::Vector3d& c, const Eigen::Vector3d&) {
+    CGAL::Frame_fields::Tangent_frame f;
+    f.direction = Eigen::Vector3d(-c[1], c[0], 0);
+    f.length_1 = 0.1;
+    f.length_2 = 0.05;
+    return f;
+  };
+  const Surface_field direct = Surface_field::from_tangent_frames(t.points, t.faces, ring);
+  std::vector<Eigen::Matrix3d> frames(t.points.size());
+  for(std::size_t f = 0; f < t.faces.size(); ++f)
+    for(int k = 0; k < 3; ++k) {
+      const auto& c = direct.corner_frames()[f];
+      frames[t.faces[f][std::size_t(k)]] = CGAL::Frame_fields::tangent_frame_matrix(c.normals[std::size_t(k)], c.frames[std::size_t(k)]);
+    }
+  std::stringstream file;
+  CGAL::Frame_fields::IO::write_frame_field(
+      file, CGAL::Frame_fields::Discrete_frame_field_3<K>(t.points, {}, frames, CGAL::Frame_fields::Frame_location::VERTICES));
+  const Surface_field read =
+      Surface_field::from_frame_field(t.points, t.faces, CGAL::Frame_fields::IO::read_frame_field<K>(file));
+  double worst = 0; // the largest difference of the corners' frame matrices
+  for(std::size_t f = 0; f < t.faces.size(); ++f)
+    for(std::size_t k = 0; k < 3; ++k) {
+      const auto &a = direct.corner_frames()[f], &b = read.corner_frames()[f];
+      worst = std::max(worst, (CGAL::Frame_fields::tangent_frame_matrix(a.normals[k], a.frames[k]) -
+                               CGAL::Frame_fields::tangent_frame_matrix(b.normals[k], b.frames[k])).cwiseAbs().maxCoeff());
+    }
+  // a volume field: axes x (0.3), y (0.2), z (0.1); at the outer equator's point (1.35, 0, 0),
+  // whose normal is x, y and z remain
+  Eigen::Matrix3d T = Eigen::Vector3d(0.3, 0.2, 0.1).asDiagonal();
+  const Surface_field volume = Surface_field::from_frame_field(t.points, t.faces, CGAL::Frame_fields::Constant_frame_field_3<K>(T));
+  const Eigen::Matrix3d at = volume.T(Point(1.35, 0, 0));
+  std::cout << "  torus field through the text format: frames within " << worst << "; a volume field's axes at the outer equator: " << at.col(0).transpose() << " | "
+            << at.col(1).transpose() << "\n";
+  VVM_CHECK_LESS(worst, 1e-15);
+  VVM_CHECK_CLOSE(std::abs(at(1, 0)), 0.2, 1e-3);
+  VVM_CHECK_CLOSE(std::abs(at(2, 1)), 0.1, 1e-3);
+  struct Line_field // one axis: no frame on a tangent plane
+  {
+    Eigen::Matrix3d T(const Point&) const { return Eigen::Vector3d(1, 0, 0).asDiagonal(); }
+  };
+  VVM_CHECK(throws_invalid_argument([&] { Surface_field::from_frame_field(t.points, t.faces, Line_field()); }, "zero"));
+}
+
 } // namespace
 
 int main(int argc, char** argv)
@@ -421,6 +479,7 @@ int main(int argc, char** argv)
       {"fandisk_sharp_edges", test_fandisk_sharp_edges},
       {"coarse_sphere", test_coarse_sphere},
       {"non_manifold_triangles", test_non_manifold_triangles},
+      {"field_from_file", test_field_from_file},
       {"bad_inputs", test_bad_inputs},
       {"curvature_field", test_curvature_field}});
 }

@@ -241,6 +241,25 @@ class TestSurfaceMesh:
         assert a.info["input"] == "(arrays)" and a.info["field"] == "isotropic"
         check_surface_result(a, 1500, 0)
 
+    def test_frame_field(self):
+        """frames given at the torus's vertices (along the ring, 0.15 and 0.075 long), as a FrameField
+        and as its file: the same mesh, a regular lattice"""
+        vertices, faces = read_off(data("surfaces/torus.off"))
+        ring = np.stack([-vertices[:, 1], vertices[:, 0], 0 * vertices[:, 0]], axis=1)
+        ring /= np.linalg.norm(ring, axis=1)[:, None]
+        centre = np.stack([vertices[:, 0], vertices[:, 1], 0 * vertices[:, 0]], axis=1)
+        centre /= np.linalg.norm(centre, axis=1)[:, None]
+        normal = vertices - centre
+        normal /= np.linalg.norm(normal, axis=1)[:, None]
+        frames = np.stack([0.15 * ring, 0.075 * np.cross(normal, ring), np.sqrt(0.15 * 0.075) * normal], axis=-1)
+        field = vvm.FrameField(vertices, np.zeros((0, 4), dtype=np.int64), frames)
+        a = vvm.surface_mesh(data("surfaces/torus.off"), size=1, field=field, threads=1)
+        field.write(work("torus_ring.field"))
+        b = vvm.surface_mesh(data("surfaces/torus.off"), size=1, field=work("torus_ring.field"), threads=2)
+        assert np.array_equal(a.points, b.points) and np.array_equal(a.cells[0].data, b.cells[0].data)
+        q = check_surface_result(a, len(a.points), 0)
+        assert q["r6"] > 0.9 and q["alignment_error_mean"] < 3, q
+
     def test_bad_input(self):
         vertices, faces = read_off(data("surfaces/torus.off"))
         nan = vertices.copy()

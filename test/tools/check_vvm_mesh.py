@@ -296,9 +296,9 @@ SURFACE_KEYS = ("model", "method", "field", "n_vertices", "n_faces", "r6", "xi_m
 
 
 def check_surface():
-    """vvm-mesh surface: the torus in its curvature field (.off), fandisk's sharp edges (.ply) and
-    the cube in the identity field at an edge length (.obj), read back closed and oriented, with
-    the report's counts; no temporary file left"""
+    """vvm-mesh surface: the torus in its curvature field (.off), fandisk's sharp edges (.ply), the
+    cube in the identity field at an edge length (.obj) and in a frame-field file, read back closed
+    and oriented, with the report's counts; no temporary file left"""
     # lower bounds of r6, xi mean, xi min, the smallest angle, under the figures of seeds 0-9 (torus:
     # 0.94-0.95, 0.95, 0.47-0.59, 27-34 degrees; fandisk: 0.65-0.67, 0.84-0.85, and next to its sharp
     # edges a sliver now and then: xi min 0-0.21, smallest angle 0.01-10.6 degrees)
@@ -327,6 +327,18 @@ def check_surface():
     require(r["is_closed_manifold"] and r["field"] == "identity" and chi == 2, f"report {r}")
     require(np.abs(points).max() <= 1 + 1e-9 and (np.abs(points).max(axis=1) >= 1 - 1e-9).all(),
             "a vertex of the cube's mesh is not on the cube")
+    # the same edge length from a frame-field file: a volume field of one vertex whose axes are
+    # 0.25 long (on each face, the two axes in its plane)
+    with open(work("cube_field.txt"), "w") as f:
+        f.write("VVMFrameField 1\nLocation Vertices\nVertices\n1\n0 0 0\nTetrahedra\n0\nFrames\n1\n"
+                "0.25 0 0 0 0.25 0 0 0 0.25\nEnd\n")
+    run(["surface", data("cube.off"), "-o", work("cube_file.off"), "--field", work("cube_field.txt"), "--size", "1",
+         "--quiet", "--json", work("cube_file.json")])
+    f = report(work("cube_file.json"))
+    chi = read_closed_surface(work("cube_file.off"))[2]
+    require(f["is_closed_manifold"] and f["field"] == work("cube_field.txt") and chi == 2, f"report {f}")
+    require(abs(f["n_vertices"] - r["n_vertices"]) <= 0.1 * r["n_vertices"] and f["r6"] > 0.75,
+            f"the field file's mesh: {f}; the identity field's: {r}")
     require(not [n for n in os.listdir(ARGS.work) if n.endswith(".tmp")], "temporary files left")
 
 
@@ -475,6 +487,7 @@ def check_bad_inputs():
         (["surface", work("quads.off"), "-o", surface_out], "triangle"),
         (["surface", data("cube.off"), "-o", out], "extension"),
         (["surface", data("cube.off"), "-o", surface_out, "--field", "cross"], "unknown field"),
+        (["surface", data("cube.off"), "-o", surface_out, "--field", work("empty.off")], "read_frame_field"),
         (["surface", data("cube.off"), "-o", surface_out, "--maximum-anisotropy", "0.5"], "anisotropy"),
         (["surface", data("cube.off"), "-o", surface_out, "--vertices", "10"], "vertices"),
         (["frobnicate"], "unknown command"),

@@ -8,9 +8,9 @@
 #ifndef VVM_FRONT_END_SURFACE_DOMAIN_H
 #define VVM_FRONT_END_SURFACE_DOMAIN_H
 
+#include "frame_fields.h"
 #include "vvm_front_end.h"
 
-#include <CGAL/Frame_fields/IO/frame_field_text_format.h>
 #include <CGAL/GSM_mesh_optimization/IO/read_closed_surface.h>
 #include <CGAL/GSM_mesh_optimization/mesh_with_vertex_count.h>
 #include <CGAL/Local_thickness_3.h>
@@ -33,7 +33,6 @@
 
 #include <cmath>
 #include <exception>
-#include <fstream>
 #include <map>
 #include <memory>
 #include <string>
@@ -78,18 +77,6 @@ struct Surface_input
     if(features_angle > 0) domain->detect_features(features_angle);
   }
 };
-
-/// the frame field in the file `path` (text format); Input_error if it cannot be read
-inline CGAL::Frame_fields::Discrete_frame_field_3<Kernel> read_frame_field_file(const std::string& path)
-{
-  std::ifstream is(path);
-  if(!is) throw Input_error("cannot open the frame-field file '" + path + "'");
-  try {
-    return CGAL::Frame_fields::IO::read_frame_field<Kernel>(is);
-  } catch(const std::invalid_argument& e) {
-    throw Input_error("'" + path + "': " + e.what());
-  }
-}
 
 /// sets `report.run_time` to the time of a front-end call when the call ends, normally or not
 class Run_timer

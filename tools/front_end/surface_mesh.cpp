@@ -5,9 +5,9 @@
 // a hexagonal lattice aligned with a tangent frame field
 // (CGAL::make_lattice_surface_mesh), measured in that field's metric.
 
+#include "frame_fields.h"
 #include "lattice_progress.h"
 
-#include <CGAL/Frame_fields/principal_curvature_frame_field.h>
 #include <CGAL/IO/polygon_soup_io.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
@@ -100,8 +100,9 @@ Surface_field surface_field(const Surface_mesh& surface, const Surface_options& 
                             Run_report& r)
 {
   const Stage stage(progress, "field");
-  stage.report(o.field == "identity" ? "the x axis on the tangent planes"
-                                     : o.field + " frames at " + std::to_string(surface.number_of_vertices()) + " vertices");
+  stage.report(o.field == "identity"             ? "the x axis on the tangent planes"
+               : is_surface_field_name(o.field) ? o.field + " frames at " + std::to_string(surface.number_of_vertices()) + " vertices"
+                                                : "the field of '" + o.field + "' on the tangent planes");
   std::vector<Point> points(surface.points().begin(), surface.points().end());
   std::vector<std::array<std::size_t, 3>> faces;
   for(auto f : surface.faces()) {
@@ -109,23 +110,10 @@ Surface_field surface_field(const Surface_mesh& surface, const Surface_options& 
     faces.push_back({std::size_t(surface.source(h)), std::size_t(surface.target(h)),
                      std::size_t(surface.target(surface.next(h)))});
   }
-  try {
-    const Surface_field field =
-        o.field == "identity"
-            ? Surface_field::from_tangent_frames(
-                  points, faces, [](const Eigen::Vector3d&, const Eigen::Vector3d&) { return FF::Tangent_frame(); },
-                  o.features_angle)
-            : FF::principal_curvature_frame_field<Kernel>(
-                  points, faces,
-                  FF::parameters::maximum_anisotropy(
-                      o.field == "isotropic" ? 1. : o.maximum_anisotropy,
-                      FF::parameters::maximum_size_ratio(o.maximum_size_ratio,
-                                                         FF::parameters::features_angle(o.features_angle))));
-    r.mesh_time = stage.time();
-    return field;
-  } catch(const std::invalid_argument& e) {
-    throw Input_error(e.what());
-  }
+  const Surface_field field =
+      surface_frame_field(points, faces, o.field, o.maximum_anisotropy, o.maximum_size_ratio, o.features_angle);
+  r.mesh_time = stage.time();
+  return field;
 }
 
 } // namespace
@@ -141,8 +129,7 @@ Surface_mesh_result surface_mesh(const Surface_source& input, const Surface_opti
   r.method = "lattice";
   r.field = o.field;
   internal::check_mesh_size(o.size);
-  if(o.field != "curvature" && o.field != "isotropic" && o.field != "identity")
-    throw Input_error("unknown field '" + o.field + "' (known: curvature, isotropic, identity)");
+  internal::check_surface_field(o.field);
   if(!(o.features_angle >= 0 && o.features_angle <= 180)) throw Input_error("the features angle must be in [0, 180] degrees");
   const auto threads = internal::thread_limit(o.threads);
   const internal::Surface_mesh surface = internal::triangle_surface(input);

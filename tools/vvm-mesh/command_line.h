@@ -122,7 +122,7 @@ inline const char* field_usage =
     "  --time-limit S      stop the field's smoothing after S seconds (default 0: none)\n";
 
 inline const char* surface_usage =
-    "usage: vvm-mesh surface INPUT -o OUT [--vertices N | --size H] [--field curvature|isotropic|identity]\n"
+    "usage: vvm-mesh surface INPUT -o OUT [--vertices N | --size H] [--field curvature|isotropic|identity|FILE]\n"
     "                        [--maximum-anisotropy A] [--maximum-size-ratio R] [--features-angle DEG]\n"
     "                        [--threads N] [--seed N] [--time-limit S] [--json FILE] [--quiet]\n"
     "  INPUT               a triangle surface, open or closed (OFF, OBJ, PLY, STL, ...)\n"
@@ -133,7 +133,9 @@ inline const char* surface_usage =
     "  --field F           curvature (default): along the principal curvature directions, the edges\n"
     "                      1/sqrt|k| long, so that each leaves the surface by about as much;\n"
     "                      isotropic: the same directions, one length; identity: the x axis\n"
-    "                      projected, one length everywhere\n"
+    "                      projected, one length everywhere; or a frame-field file (a frame per vertex\n"
+    "                      of INPUT, or a volume field as vvm-mesh field writes): at each vertex the\n"
+    "                      two axes nearest to the tangent plane\n"
     "  --maximum-anisotropy A  curvature: the largest ratio of an edge across to one along (default 3)\n"
     "  --maximum-size-ratio R  curvature, isotropic: the largest ratio of two edge lengths (default 4)\n"
     "  --features-angle D  keep the edges of the surface sharper than D degrees (default 60; 0: none);\n"

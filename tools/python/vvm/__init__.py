@@ -156,11 +156,11 @@ def _indices(array, name):
 class _Field_file:
     """the `field` argument as the front end takes it: a name or a file, written for a FrameField"""
 
-    def __init__(self, field):
+    def __init__(self, field, default="cross"):
         self.path = None
         self._tmp = None
         if field is None:
-            self.path = "cross"
+            self.path = default
         elif isinstance(field, FrameField):
             self._tmp = tempfile.TemporaryDirectory(prefix="vvm-field-")
             self.path = os.path.join(self._tmp.name, "field.txt")
@@ -168,7 +168,7 @@ class _Field_file:
         elif isinstance(field, (str, os.PathLike)):
             self.path = os.fspath(field)
         else:
-            raise ValueError("field must be 'cross', 'identity', a frame-field file or a vvm.FrameField")
+            raise ValueError("field must be a field's name, a frame-field file or a vvm.FrameField")
 
     def __enter__(self):
         return self.path
@@ -334,7 +334,10 @@ def surface_mesh(surface, vertices=None, size=None, field="curvature", maximum_a
     float array and an (m, 3) index array. ``vertices`` (default 10000; within about 5%) or
     ``size`` (the lattice's edge length in the field's metric). ``field``: ``"curvature"`` (the
     principal curvature directions, edges 1/sqrt|k| long), ``"isotropic"`` (the same
-    directions, one length) or ``"identity"`` (the x axis projected, one length everywhere);
+    directions, one length), ``"identity"`` (the x axis projected, one length everywhere), or a
+    frame-field file or :class:`FrameField`: a frame per vertex of the surface (no tetrahedra;
+    the columns of each frame the two tangent axes and the normal) or a volume field (such as
+    :func:`cross_field` gives), of whose axes the two nearest to the tangent plane are kept;
     ``maximum_anisotropy`` (curvature: the largest ratio of a frame's two lengths, >= 1) and
     ``maximum_size_ratio`` (the largest ratio of two lengths, >= 1) bound it. Edges sharper
     than ``features_angle`` (degrees, default 60; 0: none) and the borders are kept.
@@ -356,9 +359,10 @@ def surface_mesh(surface, vertices=None, size=None, field="curvature", maximum_a
         mesh.write("torus_lattice.off")
     """
     count, edge = _size(vertices, size, "vertices", 10000)
-    arrays = _vvm.surface_mesh(_surface(surface), count, edge, str(field), float(maximum_anisotropy),
-                               float(maximum_size_ratio), _angle(features_angle), _threads(threads), _seed(seed),
-                               _time_limit(time_limit), _progress(progress))
+    with _Field_file(field, "curvature") as field_path:
+        arrays = _vvm.surface_mesh(_surface(surface), count, edge, field_path, float(maximum_anisotropy),
+                                   float(maximum_size_ratio), _angle(features_angle), _threads(threads), _seed(seed),
+                                   _time_limit(time_limit), _progress(progress))
     mesh = _meshio().Mesh(arrays["points"], [("triangle", arrays["triangles"])])
     mesh.info = dict(arrays["report"], quality=arrays["quality"])
     return mesh

@@ -165,6 +165,33 @@ public:
   }
 
   /*!
+   * the field `field` (a model of `FrameField_3`, such as a `Discrete_frame_field_3` read from the
+   * frame-field text format: a frame per vertex of the surface, or a volume field) on the tangent
+   * planes: at each corner, of the three axes of \f$ T(p) \f$ at its vertex \f$ p \f$, the one
+   * nearest to the corner's normal (as `from_tangent_frames()` takes it) is dropped; the first of
+   * the two others is the direction, and their lengths are \f$ l_1 \f$ and \f$ l_2 \f$. A field
+   * written as \f$ (l_1 d_1, l_2 d_2, \sqrt{l_1 l_2}\, n) \f$ comes back as it was.
+   * \throws std::invalid_argument as the constructor, or if `field` throws it at a vertex
+   */
+  template <class FrameField>
+  static Surface_frame_field_3 from_frame_field(const std::vector<Point_3>& points, const std::vector<Face>& faces,
+                                               const FrameField& field, double features_angle = 60)
+  {
+    return from_tangent_frames(points, faces, [&](const Eigen::Vector3d& p, const Eigen::Vector3d& n) {
+      const Matrix T = field.T(Point_3(p[0], p[1], p[2]));
+      int normal = 0;
+      for(int k = 1; k < 3; ++k)
+        if(std::abs(T.col(k).normalized().dot(n)) > std::abs(T.col(normal).normalized().dot(n))) normal = k;
+      const int first = normal == 0 ? 1 : 0, second = normal == 2 ? 1 : 2;
+      Tangent_frame t;
+      t.direction = T.col(first);
+      t.length_1 = T.col(first).norm();
+      t.length_2 = T.col(second).norm();
+      return t;
+    }, features_angle);
+  }
+
+  /*!
    * the unit normal at each corner of each face: the area-weighted mean of the normals of the
    * faces around the corner's vertex that turn by at most `features_angle` degrees from the face
    * \throws std::invalid_argument on no face, a non-finite coordinate, an index out of range or a
