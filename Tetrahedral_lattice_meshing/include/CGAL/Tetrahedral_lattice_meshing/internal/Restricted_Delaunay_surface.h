@@ -12,7 +12,8 @@
 // in one plane have no Voronoi edges across it: their 2D Delaunay triangles
 // are kept where their centroid lies on the surface. Flat triangles (three
 // particles on one straight border or sharp edge, which Delaunay joins along
-// the hull) are never kept.
+// the hull) are never kept. Where the triangles are not a 2-manifold,
+// remove_non_manifold_triangles() leaves holes to fill instead.
 
 #ifndef CGAL_TETRAHEDRAL_LATTICE_MESHING_INTERNAL_RESTRICTED_DELAUNAY_SURFACE_H
 #define CGAL_TETRAHEDRAL_LATTICE_MESHING_INTERNAL_RESTRICTED_DELAUNAY_SURFACE_H
@@ -28,9 +29,9 @@
 #include <Eigen/Core>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <functional>
-#include <array>
 #include <set>
 #include <utility>
 #include <vector>
