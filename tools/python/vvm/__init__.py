@@ -407,7 +407,9 @@ def optimize(mesh, features_angle=None, fixed_boundary=False, boundary_distance=
 
 class FrameField:
     """A frame field on a tetrahedral mesh: at each vertex (or cell) a 3x3 matrix T whose
-    columns are the lattice's axes (their lengths the edge lengths).
+    columns are the lattice's axes (their lengths the edge lengths). With no tetrahedra (an
+    (0, 4) array) and a frame per vertex, a field at points, such as the vertices of a surface
+    for :func:`surface_mesh` (columns: the two tangent axes and the normal).
 
     Attributes: ``points`` (n, 3), ``tetrahedra`` (m, 4), ``frames`` (n or m, 3, 3) and
     ``location`` (``"vertices"`` or ``"cells"``).
