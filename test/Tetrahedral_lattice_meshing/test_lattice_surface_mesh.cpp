@@ -308,7 +308,8 @@ void test_fandisk_sharp_edges()
 // sphere966, an input far coarser than the output (966 vertices for 10,000): particles of one
 // flat input triangle nearly on one circle make near-flat Delaunay tetrahedra whose rounded
 // circumcentres move the facets' duals off the surface; before the facets were tested along
-// their exact dual lines too, 300 holes were filled and the smallest angle was 0 degrees
+// their exact dual lines too, the holes this left were filled with triangles of zero angle
+// (benchmark/Tetrahedral_lattice_meshing/RESULTS.md, third run)
 void test_coarse_sphere()
 {
   Surface_mesh surface;
