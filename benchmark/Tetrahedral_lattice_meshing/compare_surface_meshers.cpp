@@ -155,7 +155,8 @@ int run(const Options& o)
     if(o.verbose && method == "lattice")
       std::cerr << "  lattice: particles " << report.particle_time << " s, triangles " << report.triangle_time << " s, "
                 << report.number_of_flips << " flips, " << report.number_of_non_manifold_triangles
-                << " non-manifold triangles removed, " << report.number_of_filled_holes << " holes filled\n";
+                << " non-manifold triangles removed, " << report.number_of_filled_holes << " holes filled, "
+                << report.number_of_smoothing_moves << " smoothing moves\n";
     const TLM::Surface_mesh_quality q = TLM::surface_mesh_quality(mesh, field, o.features_angle);
     const double hausdorff = (std::max)(PMP::approximate_Hausdorff_distance<CGAL::Parallel_if_available_tag>(
                                             mesh, input, PMP::parameters::use_grid_sampling(true).grid_spacing(spacing)),
@@ -182,6 +183,7 @@ int run(const Options& o)
                    .add("triangle_time_s", method == "lattice" ? report.triangle_time : 0.)
                    .add("filled_holes", report.number_of_filled_holes)
                    .add("non_manifold_triangles", report.number_of_non_manifold_triangles)
+                   .add("smoothing_moves", report.number_of_smoothing_moves)
                    .add("field_time_s", field_time));
     if(!o.out_dir.empty()) {
       const std::string out = o.out_dir + "/" + model + "_" + method + ".off";

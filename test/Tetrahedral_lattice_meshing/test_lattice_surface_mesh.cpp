@@ -5,7 +5,7 @@
 // closed manifold meshes of a sphere and a torus whose vertices lie on the surface (the same
 // with one thread as with two), the sharp edges of a cube kept as mesh edges, no flat triangle
 // along fandisk's, no hole in a mesh finer than its coarse input, non-manifold triangles removed,
-// bad inputs refused; the principal curvature field of a torus against its closed form; a
+// the worst triangles' vertices moved to their known optimum, bad inputs refused; the principal curvature field of a torus against its closed form; a
 // field read from the frame-field text format.
 
 #include "lattice_test_support.h"
@@ -347,6 +347,61 @@ void test_non_manifold_triangles()
   VVM_CHECK(manifold == fans);
 }
 
+// smooth_worst_triangles() on hand-made one-rings whose optimum is known: a hexagon, regular in
+// a field stretched 2:1 along x, whose centre vertex is off the centre goes back to it; a vertex
+// on a sharp edge (two planes at 90 degrees) slides along it to where its six triangles are
+// equilateral; a one-ring at its optimum does not move
+void test_vertex_smoothing()
+{
+  using TLM::internal::smooth_worst_triangles;
+  typedef TLM::internal::Surface_boundary<K> Boundary;
+  auto eigen_points = [](const Soup& s) {
+    std::vector<Eigen::Vector3d> x;
+    for(const Point& p : s.points) x.emplace_back(p.x(), p.y(), p.z());
+    return x;
+  };
+  auto no_feature = [](Surface_mesh::Edge_index) { return false; };
+  {
+    const Soup plane = parallelogram(2, Eigen::Vector2d(4, 0), Eigen::Vector2d(0, 4));
+    const Boundary boundary(eigen_points(plane), plane.faces, 60);
+    CGAL::Frame_fields::Tangent_frame stretched;
+    stretched.length_1 = 2;
+    const Surface_field field = Surface_field::from_tangent_frames(
+        plane.points, plane.faces, [&](const Eigen::Vector3d&, const Eigen::Vector3d&) { return stretched; });
+    Soup hexagon;
+    hexagon.points.emplace_back(2.3, 2.1, 0.);
+    for(int k = 0; k < 6; ++k)
+      hexagon.points.emplace_back(2 + 2 * std::cos(k * CGAL_PI / 3), 2 + std::sin(k * CGAL_PI / 3), 0.);
+    for(std::size_t k = 0; k < 6; ++k) hexagon.faces.push_back({0, 1 + k, 1 + (k + 1) % 6});
+    Surface_mesh mesh = hexagon.mesh();
+    const auto centre = *mesh.vertices().begin();
+    VVM_CHECK(smooth_worst_triangles(mesh, field, boundary, no_feature, 50., 5) >= 1);
+    VVM_CHECK(CGAL::squared_distance(mesh.point(centre), Point(2, 2, 0)) < 1e-24);
+    VVM_CHECK_CLOSE(TLM::surface_mesh_quality(mesh, field).min_angle, 60., 1e-9);
+    VVM_CHECK_EQUAL(smooth_worst_triangles(mesh, field, boundary, no_feature, 61., 5), std::size_t(0));
+  }
+  {
+    Soup fold; // z = 0 for y >= 0 and y = 0 for z >= 0, meeting along the x axis
+    fold.points = {Point(-2, 0, 0), Point(2, 0, 0), Point(2, 2, 0), Point(-2, 2, 0), Point(2, 0, 2), Point(-2, 0, 2)};
+    fold.faces = {{0, 1, 2}, {0, 2, 3}, {1, 0, 5}, {1, 5, 4}};
+    const Boundary boundary(eigen_points(fold), fold.faces, 60);
+    const Surface_field field = Surface_field::from_tangent_frames(
+        fold.points, fold.faces, [](const Eigen::Vector3d&, const Eigen::Vector3d&) { return CGAL::Frame_fields::Tangent_frame(); });
+    const double h = std::sqrt(3.) / 2;
+    Soup ring;
+    ring.points = {Point(0.3, 0, 0),  Point(1, 0, 0),  Point(0.5, h, 0), Point(-0.5, h, 0),
+                   Point(-1, 0, 0), Point(-0.5, 0, h), Point(0.5, 0, h)};
+    for(std::size_t k = 0; k < 6; ++k) ring.faces.push_back({0, 1 + k, 1 + (k + 1) % 6});
+    Surface_mesh mesh = ring.mesh();
+    auto on_axis = [&](Surface_mesh::Vertex_index v) { return mesh.point(v).y() == 0 && mesh.point(v).z() == 0; };
+    auto is_feature = [&](Surface_mesh::Edge_index e) { return on_axis(mesh.vertex(e, 0)) && on_axis(mesh.vertex(e, 1)); };
+    const auto centre = *mesh.vertices().begin();
+    VVM_CHECK(smooth_worst_triangles(mesh, field, boundary, is_feature, 50., 5) >= 1);
+    std::cout << "  smoothing: the vertex on the sharp edge went to " << mesh.point(centre) << "\n";
+    VVM_CHECK(CGAL::squared_distance(mesh.point(centre), Point(0, 0, 0)) < 1e-24);
+  }
+}
+
 // bad inputs: a clear exception before any work, never a crash
 void test_bad_inputs()
 {
@@ -480,6 +535,7 @@ int main(int argc, char** argv)
       {"fandisk_sharp_edges", test_fandisk_sharp_edges},
       {"coarse_sphere", test_coarse_sphere},
       {"non_manifold_triangles", test_non_manifold_triangles},
+      {"vertex_smoothing", test_vertex_smoothing},
       {"field_from_file", test_field_from_file},
       {"bad_inputs", test_bad_inputs},
       {"curvature_field", test_curvature_field}});

@@ -155,7 +155,8 @@ Surface_mesh_result surface_mesh(const Surface_source& input, const Surface_opti
   r.optimize_time = stage.time();
   r.time_limit_reached = lattice.time_limit_reached;
   stage.report(std::to_string(mesh.number_of_faces()) + " triangles, " + std::to_string(lattice.number_of_flips) +
-               " flips, " + std::to_string(lattice.number_of_filled_holes) + " holes filled");
+               " flips, " + std::to_string(lattice.number_of_filled_holes) + " holes filled, " +
+               std::to_string(lattice.number_of_smoothing_moves) + " smoothing moves");
 
   Surface_mesh_result result;
   result.quality = internal::TLM::surface_mesh_quality(mesh, field, o.features_angle);

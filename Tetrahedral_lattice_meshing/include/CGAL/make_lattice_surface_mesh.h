@@ -16,6 +16,7 @@
 #include <CGAL/Tetrahedral_lattice_meshing/internal/Restricted_Delaunay_surface.h>
 #include <CGAL/Tetrahedral_lattice_meshing/internal/Surface_boundary.h>
 #include <CGAL/Tetrahedral_lattice_meshing/internal/Surface_metric_flips.h>
+#include <CGAL/Tetrahedral_lattice_meshing/internal/Surface_vertex_smoothing.h>
 #include <CGAL/Tetrahedral_lattice_meshing/surface_mesh_quality.h>
 #include <CGAL/VVM/internal/Stopping.h>
 #include <CGAL/lattice_particles_3.h>
@@ -61,8 +62,11 @@ struct Lattice_surface_mesh_report
   /// removed, and their holes filled
   bool is_manifold = false;
   std::size_t number_of_non_manifold_triangles = 0; ///< removed from the restricted Delaunay triangles
+  /// vertices moved to raise the smallest angle, in the field's metric, of the triangles around
+  /// them (each move counted; a vertex may move in several rounds)
+  std::size_t number_of_smoothing_moves = 0;
   double particle_time = 0;                        ///< seconds
-  double triangle_time = 0;                        ///< seconds: restricted Delaunay triangles and flips
+  double triangle_time = 0;                        ///< seconds: restricted Delaunay triangles, flips and smoothing
   bool time_limit_reached = false;
   bool stopped_by_visitor = false;
 };
@@ -84,7 +88,11 @@ struct Lattice_surface_mesh_report
  * a patch's triangles are the Delaunay facets of its particles whose dual Voronoi edge crosses it
  * at a point no particle is nearer to), so that no triangle cuts a sharp edge; the holes a lattice
  * defect next to a sharp edge leaves are filled (`Polygon_mesh_processing::triangulate_hole()`),
- * and the triangles flipped until they are Delaunay in the field's metric.
+ * and the triangles flipped until they are Delaunay in the field's metric. Last, the vertices of
+ * the triangles whose smallest angle in the metric is under 50 degrees move towards the point that
+ * makes the triangles around them equilateral in the metric, staying on their patch or sliding
+ * along their curve, where that raises the smallest angle around them, and the triangles are
+ * flipped again.
  *
  * The field's frames \f$ T(x) \f$ must have their first two axes in the tangent plane at the
  * surface point \f$ x \f$ (`Frame_fields::Surface_frame_field_3`): the lattice's neighbours of a
@@ -281,6 +289,9 @@ make_lattice_surface_mesh(const TriangleMesh& surface, const FrameField& field,
   }
   rep.number_of_flips = TLM::internal::flip_flat_triangles(mesh, is_feature);
   rep.number_of_flips += TLM::internal::flip_to_metric_Delaunay(mesh, field, is_feature);
+  // the vertices of triangles under 50 degrees in the metric, towards equilateral one-rings
+  rep.number_of_smoothing_moves = TLM::internal::smooth_worst_triangles(mesh, field, boundary, is_feature, 50., 5);
+  if(rep.number_of_smoothing_moves > 0) rep.number_of_flips += TLM::internal::flip_to_metric_Delaunay(mesh, field, is_feature);
   rep.triangle_time = timer.time() - timer_before_triangles;
   return mesh;
 }

@@ -77,6 +77,10 @@ struct Lattice
   double insertion_distance = 0;
   /// \f$ e_{ins} \f$: a candidate is inserted only if its energy is under this (Alg. 4)
   double insertion_energy = -0.1;
+  /// a particle on the boundary this near a sharp edge goes onto it (0.3; 0.5 for the hexagonal
+  /// lattice, halfway to the row beside a curve at \f$ \sqrt{3}/2 \f$: nearer, it leaves a
+  /// cap triangle over the curve)
+  double sharp_edge_snap = 0.3;
 
   std::size_t number_of_holes() const { return one_ring.size(); }
   /// true for the lattice of surfaces (hexagonal), whose particles all lie on the surface
@@ -98,6 +102,7 @@ struct Lattice
       l.closest = 1;
       l.particles_per_cube = 0;
       l.particles_per_boundary_square = 2 / std::sqrt(3.);
+      l.sharp_edge_snap = 0.5;
     } else if(t == Lattice_type::BCC) {
       for(int x = -1; x <= 1; x += 2)
         for(int y = -1; y <= 1; y += 2)

@@ -73,7 +73,7 @@ std::vector<Insertion_candidate> empty_sites(const System& s, double min_distanc
         c.direction = b.direction;
         if(s.boundary()->has_sharp_edges()) { // near a sharp edge: on it, as the projection would put it
           const auto e = s.boundary()->closest_on_sharp_edge(c.point);
-          if((s.B(c.point) * (e.point - c.point)).norm() <= 0.3 * l) {
+          if((s.B(c.point) * (e.point - c.point)).norm() <= s.lattice().sharp_edge_snap * l) {
             c.point = e.point;
             c.kind = Particle_kind::SHARP_EDGE;
             c.feature = e.feature;

@@ -391,7 +391,7 @@ public:
   /*
    * After a round (Alg. 2, end): particles outside the domain, or within 0.3 l* of the
    * boundary (in the imagined space), go onto the surface and become boundary particles;
-   * boundary particles within 0.3 l* of a sharp edge go onto it. Boundary and sharp-edge
+   * boundary particles within the lattice's `sharp_edge_snap` of a sharp edge go onto it. Boundary and sharp-edge
    * particles that slid in their tangent plane or line go back onto their surface or edge.
    */
   void project(double snap = 0.3)
@@ -402,7 +402,8 @@ public:
     auto to_edge = [&](std::size_t i) {
       if(!boundary_->has_sharp_edges()) return;
       const auto e = boundary_->closest_on_sharp_edge(points[i]);
-      if(kinds[i] == Particle_kind::SHARP_EDGE || (B(points[i]) * (e.point - points[i])).norm() <= snap * l_) {
+      if(kinds[i] == Particle_kind::SHARP_EDGE ||
+         (B(points[i]) * (e.point - points[i])).norm() <= lattice_.sharp_edge_snap * l_) {
         points[i] = e.point;
         kinds[i] = Particle_kind::SHARP_EDGE;
         features[i] = e.feature;

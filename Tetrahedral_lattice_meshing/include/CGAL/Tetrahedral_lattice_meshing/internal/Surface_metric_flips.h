@@ -3,7 +3,8 @@
 //
 // Edge flips that make a triangle mesh of a surface Delaunay in a frame
 // field's metric: an edge is flipped where its two opposite angles, measured
-// in the imagined space of the frame at its midpoint, sum to more than pi
+// in the imagined space of the frame at the centroid of its two triangles' four
+// vertices, sum to more than pi
 // (the restricted Delaunay triangles are Delaunay in Euclidean space, not in
 // an anisotropic field's). Feature edges and border edges stay; a flip that
 // would fold the surface (a new face turned more than 30 degrees from the two
@@ -124,7 +125,9 @@ std::size_t flip_to_metric_Delaunay(Mesh& mesh, const FrameField& field, const I
       const auto va = mesh.source(h), vb = mesh.target(h), vc = mesh.target(mesh.next(h)), vd = mesh.target(mesh.next(o));
       if(vc == vd || mesh.degree(va) <= 3 || mesh.degree(vb) <= 3) continue;
       if(mesh.halfedge(vc, vd) != Mesh::null_halfedge()) continue;
-      const Eigen::Vector3d a = eig(va), b = eig(vb), c = eig(vc), d = eig(vd), m = 0.5 * (a + b);
+      // the metric at the quadrilateral's centroid, the same for both diagonals: with the frame
+      // at the edge's midpoint, an edge and its flip may each want the other
+      const Eigen::Vector3d a = eig(va), b = eig(vb), c = eig(vc), d = eig(vd), m = 0.25 * (a + b + c + d);
       const Eigen::Matrix3d B = field.B(Point(m[0], m[1], m[2]));
       if(angle_in_metric(B, a, b, c) + angle_in_metric(B, b, a, d) <= CGAL_PI + 1e-12) continue;
       const Eigen::Vector3d n1 = (b - a).cross(c - a), n2 = (a - b).cross(d - b);
