@@ -36,9 +36,10 @@ using VVM::internal::parallel_for_each_index;
  * in the metric of `field` (its frame at the centroid) is under `bound` degrees. A vertex goes
  * towards the mean of the apexes that make each triangle of its one-ring equilateral in the
  * metric of its own frame, then onto `boundary`: onto its curve if two feature edges
- * (`is_feature(edge)`) meet at it, else onto its patch; a corner (another number of feature
- * edges) and a vertex of a border stay. The move, or a half or quarter of it, is kept if no
- * triangle of the one-ring turns by more than 60 degrees and the one-ring's smallest angle grows.
+ * (`is_feature(edge)`) meet at it, else onto its patch; a corner of `boundary` and a vertex of
+ * a border or of another number of feature edges stay. The move, or a half or quarter of it, is
+ * kept if no triangle of the one-ring turns by more than 60 degrees and the one-ring's smallest
+ * angle grows.
  * A round after the first looks only at the triangles around the vertices the last one moved.
  * Returns the number of moves.
  */
@@ -98,6 +99,8 @@ std::size_t smooth_worst_triangles(Mesh& mesh, const FrameField& field, const Bo
       const Eigen::Vector3d p = eig(v);
       const bool on_curve = feature_edges == 2;
       if(on_curve && !boundary.has_sharp_edges()) continue;
+      // a corner where two curves meet has two feature edges too; its particle never moved
+      if(on_curve && std::find(boundary.corners().begin(), boundary.corners().end(), p) != boundary.corners().end()) continue;
       const int feature = on_curve ? boundary.closest_on_sharp_edge(p).feature : boundary.closest_on_surface(p).feature;
       // the apexes, in the imagined space of v's frame, each in its triangle's plane
       const Eigen::Matrix3d B = field.B(point(p));
