@@ -219,6 +219,9 @@ public:
   /// false if the frames do not stretch (rotations of one scale) or are constant at the
   /// particles: the pairs' frames then stay as built for the round
   bool frames_vary() const { return !derivatives_.empty(); }
+  /// false: the pairs' frames stay as built for each round even where the frames stretch (the
+  /// optimizer's coarsest level)
+  bool frame_derivatives = true;
 
   /*
    * E = sum_i sum_{j != i} E_ij = 2 sum_pairs E_ij over the frozen pairs, at positions
@@ -468,6 +471,7 @@ private:
     const std::size_t n = points.size();
     derivatives_.clear();
     built_at_.clear();
+    if(!frame_derivatives) return;
     std::vector<Eigen::Matrix3d> b_i(n);
     std::vector<double> scale(n);
     std::vector<char> stretches(n, 0);
