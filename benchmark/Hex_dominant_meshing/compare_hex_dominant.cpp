@@ -161,27 +161,6 @@ Options parse_command_line(int argc, char** argv)
   return o;
 }
 
-// a tube about z: radii 0.5 and 1, z in [0, 1], n facets around
-Surface_mesh tube_surface(int n)
-{
-  Surface_mesh sm;
-  std::vector<Surface_mesh::Vertex_index> v; // ring (outer bottom, outer top, inner bottom, inner top) x n
-  for(int ring = 0; ring < 4; ++ring)
-    for(int k = 0; k < n; ++k) {
-      const double a = 2 * CGAL_PI * k / n, r = ring < 2 ? 1. : 0.5, z = ring % 2 ? 1. : 0.;
-      v.push_back(sm.add_vertex(Point_3(r * std::cos(a), r * std::sin(a), z)));
-    }
-  auto V = [&](int ring, int k) { return v[std::size_t(ring * n + (k % n))]; };
-  for(int k = 0; k < n; ++k) {
-    sm.add_face(V(0, k), V(0, k + 1), V(1, k + 1), V(1, k)); // outside, normal out
-    sm.add_face(V(2, k), V(3, k), V(3, k + 1), V(2, k + 1)); // inside, normal towards the axis
-    sm.add_face(V(1, k), V(1, k + 1), V(3, k + 1), V(3, k)); // top
-    sm.add_face(V(0, k), V(2, k), V(2, k + 1), V(0, k + 1)); // bottom
-  }
-  PMP::triangulate_faces(sm);
-  return sm;
-}
-
 Field make_field(const Options& o, const Domain& domain, double volume)
 {
   const std::string& f = o.field;
@@ -263,7 +242,7 @@ int run(const Options& o)
     if(T.determinant() < 0) PMP::reverse_face_orientations(surface);
     model = "warped-cube";
   } else if(is_cylinder) {
-    surface = tube_surface(256);
+    surface = vvm_benchmark::tube_surface<Surface_mesh>(256);
     model = "cylinder";
   } else {
     vvm_benchmark::read_surface_input(o.input, surface);

@@ -11,7 +11,7 @@
 #include "hex_dominant_test_support.h"
 #include "output_hash.h"
 
-#include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
+#include "../../benchmark/common/box_surface.h" // the benchmark's tube
 
 namespace {
 
@@ -82,27 +82,6 @@ void test_all_hex_cube_at_odd_layer_count()
   VVM_CHECK(s.number_of_inverted_cells == 0 && s.number_of_nonconforming_faces == 0);
 }
 
-// a tube about z, radii 0.5 and 1, z in [0, 1], n quadrilaterals around, triangulated
-Surface_mesh tube_surface(int n)
-{
-  Surface_mesh sm;
-  std::vector<Surface_mesh::Vertex_index> v; // rings: outer bottom, outer top, inner bottom, inner top
-  for(int ring = 0; ring < 4; ++ring)
-    for(int k = 0; k < n; ++k) {
-      const double a = 2 * CGAL_PI * k / n, r = ring < 2 ? 1. : 0.5, z = ring % 2 ? 1. : 0.;
-      v.push_back(sm.add_vertex(Point_3(r * std::cos(a), r * std::sin(a), z)));
-    }
-  auto V = [&](int ring, int k) { return v[std::size_t(ring * n + (k % n))]; };
-  for(int k = 0; k < n; ++k) {
-    sm.add_face(V(0, k), V(0, k + 1), V(1, k + 1), V(1, k));
-    sm.add_face(V(2, k), V(3, k), V(3, k + 1), V(2, k + 1));
-    sm.add_face(V(1, k), V(1, k + 1), V(3, k + 1), V(3, k));
-    sm.add_face(V(0, k), V(2, k), V(2, k + 1), V(0, k + 1));
-  }
-  CGAL::Polygon_mesh_processing::triangulate_faces(sm);
-  return sm;
-}
-
 // make_hex_dominant_mesh_3 on the tube in the scale-corrected cylinder field (Fig. 4.16a) at
 // 30,000 particles asked, the default levels: every ring around the axis holds the same number
 // of cells, so the lattice must come out whole (11 x 21 layers of equal rings) and all-hex. The
@@ -110,7 +89,7 @@ Surface_mesh tube_surface(int n)
 // and tets here
 void test_all_hex_scale_corrected_cylinder()
 {
-  const Surface_mesh surface = tube_surface(256);
+  const Surface_mesh surface = vvm_benchmark::tube_surface<Surface_mesh>(256);
   Cube_domain domain(surface);
   domain.detect_features(60);
   HDM::Hex_dominant_report report;
