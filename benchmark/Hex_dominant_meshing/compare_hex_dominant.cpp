@@ -4,18 +4,21 @@
 // compare_hex_dominant INPUT [--particles N] [--features-angle DEG]
 //                      [--field cross|identity|fig4.15a..f|cylinder|cylinder-scaled]
 //                      [--q-bound X | --q-bound-sweep] [--threads N] [--json FILE] [--out-dir DIR]
-//                      [--boundary-distance D] [--seed N] [--levels K] [--verbose]
+//                      [--boundary-distance D] [--seed N] [--levels K] [--rounds N] [--classify]
+//                      [--verbose]
 //
 // make_hex_dominant_mesh_3 (dissertation 4.4, Tables 4.6-4.7): cell counts, hex volume,
 // scaled Jacobians, alignment, boundary distance to the input against make_mesh_3's at
 // the same vertex count, times per stage. The sweep merges the same tets at Q_bound
-// 0, 0.1, ..., 0.9 (the Q_SJ / H_vol curve of Fig. 4.22c).
+// 0, 0.1, ..., 0.9 (the Q_SJ / H_vol curve of Fig. 4.22c). --classify tells, after each merging,
+// where the volume not in hexahedra goes (non_hex_causes.h).
 
 #include <CGAL/make_mesh_3.h> // first: it brings the TBB headers CGAL's other Mesh_3 headers need
 
 #include "box_surface.h"
 #include "command_line.h"
 #include "json_lines.h"
+#include "non_hex_causes.h"
 #include "surface_input.h"
 #include "table.h"
 #include "thickness_sizing.h"
@@ -78,8 +81,9 @@ const char* usage =
     "usage: compare_hex_dominant INPUT [--particles N] [--features-angle DEG]\n"
     "                            [--field cross|identity|fig4.15a..f|cylinder|cylinder-scaled]\n"
     "                            [--q-bound X | --q-bound-sweep] [--threads N] [--json FILE] [--out-dir DIR]\n"
-    "                            [--boundary-distance D] [--seed N] [--levels K] [--sizing uniform|thickness]\n"
-    "                            [--verbose]\n"
+    "                            [--boundary-distance D] [--seed N] [--levels K] [--rounds N]\n"
+    "                            [--sizing uniform|thickness]\n"
+    "                            [--classify] [--verbose]\n"
     "  INPUT  a closed triangle surface (OFF, OBJ, PLY, STL, ...), or cube, warped-cube or cylinder:\n"
     "         cube is [-1,1]^3 ([0.1,1.1]^3 with fig4.15c and fig4.15d); warped-cube is T [-1,1]^3\n"
     "         for a constant field T (fig4.15b, e, f; scaled to volume 8), the warped cube of\n"
@@ -103,8 +107,13 @@ const char* usage =
     "                      none)\n"
     "  --seed N            seed of the particles and of make_mesh_3 (default 0)\n"
     "  --levels K          multiresolution levels of the particles, K in [0, 6] (default: the package's choice)\n"
+    "  --rounds N          the most insertion and deletion rounds per level (default: the package's, 16 at\n"
+    "                      the coarsest level, 8 after)\n"
     "  --sizing S          uniform (default), or thickness: the field's frames scaled by the walls' and\n"
     "                      gaps' thickness, 3 cells across, graded by 0.3 (CGAL::Thickness_sizing_field_3)\n"
+    "  --classify          after each merging, the volume not in hexahedra by cause: a hexahedron\n"
+    "                      candidate under Q_bound, overlapping a kept one or not conforming; no\n"
+    "                      candidate near a singular edge, at the boundary, at a particle off the lattice\n"
     "  --verbose           progress of the particle rounds\n";
 
 // T of the constant fields
@@ -123,8 +132,8 @@ struct Options : vvm_benchmark::Common_options
   std::string field, sizing = "uniform";
   std::size_t particles = 30000;
   double q_bound = 0.5, boundary_distance = 0;
-  bool sweep = false;
-  int levels = -1;
+  bool sweep = false, classify = false;
+  int levels = -1, rounds = -1;
 };
 
 Options parse_command_line(int argc, char** argv)
@@ -136,10 +145,12 @@ Options parse_command_line(int argc, char** argv)
     else if(c.is("--field")) o.field = c.value();
     else if(c.is("--q-bound")) o.q_bound = c.number_in<double>(0, 1);
     else if(c.is("--q-bound-sweep")) o.sweep = true;
+    else if(c.is("--classify")) o.classify = true;
     else if(c.is("--boundary-distance")) {
       o.boundary_distance = c.number<double>();
       if(!(o.boundary_distance >= 0)) throw Input_error("--boundary-distance must be non-negative");
     } else if(c.is("--levels")) o.levels = c.number_in<int>(0, 6);
+    else if(c.is("--rounds")) o.rounds = c.number_in<int>(0, 1000);
     else if(c.is("--sizing")) o.sizing = c.one_of({"uniform", "thickness"});
     else c.common(o);
   }
@@ -296,8 +307,11 @@ int run(const Options& o)
             HDM::parameters::quality_bound(q, HDM::parameters::boundary_distance(o.boundary_distance,
                 HDM::parameters::report(&report,
                     HDM::parameters::tetrahedral_mesh(&tets, CGAL::parameters::random_seed(o.seed).verbose(o.verbose)))))));
-        mesh = o.levels < 0 ? CGAL::make_hex_dominant_mesh_3<C3T3>(domain, field, np)
-                            : CGAL::make_hex_dominant_mesh_3<C3T3>(domain, field, TP::multiresolution_levels(o.levels, np));
+        auto with_levels = [&](const auto& np) {
+          return o.levels < 0 ? CGAL::make_hex_dominant_mesh_3<C3T3>(domain, field, np)
+                              : CGAL::make_hex_dominant_mesh_3<C3T3>(domain, field, TP::multiresolution_levels(o.levels, np));
+        };
+        mesh = o.rounds < 0 ? with_levels(np) : with_levels(np.number_of_iterations(o.rounds));
         const double n = double(mesh.points.size());
         if(!(n > 0) || std::abs(n - double(o.particles)) <= 0.1 * double(o.particles)) break;
         wanted *= double(o.particles) / n;
@@ -327,6 +341,11 @@ int run(const Options& o)
       make_mesh_3_distance = (std::max)(d.first, d.second);
       make_mesh_3_vertices = CGAL::GSM_mesh_optimization::number_of_vertices_in_complex(r.c3t3);
     }
+    std::optional<vvm_benchmark::Non_hex_causes> causes;
+    if(o.classify)
+      causes = vvm_benchmark::classify_non_hex_volume(
+          mesh, report.merge, [&field](const Eigen::Vector3d& x) { return Eigen::Matrix3d(field.T(Point_3(x[0], x[1], x[2]))); },
+          q, report.edge_length);
     const double total = field_time + report.particle_time + report.tetrahedra_time + report.merge_time;
     const double ratio = make_mesh_3_distance > 1e-9 * std::sqrt(PMP::area(surface)) ? distance / make_mesh_3_distance : -1;
     table.print_row({model, o.field, q, mesh.points.size(), s.number_of_hexahedra, s.number_of_prisms,
@@ -350,6 +369,7 @@ int run(const Options& o)
                    .add("n_nonconforming", s.number_of_nonconforming_faces).add("time_field_s", field_time)
                    .add("time_particles_s", report.particle_time).add("time_tets_s", report.tetrahedra_time)
                    .add("time_merge_s", report.merge_time).add("time_s", total));
+    if(causes) causes->print();
     if(!o.out_dir.empty() && q == bounds.front()) {
       std::vector<double> verdict; // Verdict's hexahedron measure: 0 for the other cells
       for(const auto& c : mesh.cells) {
