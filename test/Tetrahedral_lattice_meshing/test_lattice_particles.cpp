@@ -700,6 +700,8 @@ void test_bad_inputs()
   VVM_CHECK(throws_invalid_argument(run(TLM::parameters::edge_length(std::nan(""))), "edge length must be positive"));
   VVM_CHECK(throws_invalid_argument(run(TLM::parameters::edge_length(1e-5)), "GB of memory (at most"));
   VVM_CHECK(throws_invalid_argument(run(TLM::parameters::number_of_particles(std::size_t(0))), "at least 1"));
+  // the cube's 8 corners are particles: fewer particles asked for cannot hold them
+  VVM_CHECK(throws_invalid_argument(run(TLM::parameters::number_of_particles(std::size_t(6))), "8 corners"));
   // (with a coarse edge length, so that a parameter wrongly accepted costs little)
   VVM_CHECK(throws_invalid_argument(run(TLM::parameters::kernel_width(-1., TLM::parameters::edge_length(0.5))),
                                     "kernel width"));

@@ -427,6 +427,26 @@ void test_bad_inputs()
   VVM_CHECK(throws_invalid_argument([&] { CGAL::make_lattice_surface_mesh(surface, field, TLM::parameters::number_of_particles(std::size_t(1e12))); }, "particles"));
   VVM_CHECK(throws_invalid_argument([&] { CGAL::make_lattice_surface_mesh(surface, field, TLM::parameters::lattice(TLM::Lattice_type::BCC)); }, "hexagonal"));
   VVM_CHECK(throws_invalid_argument([&] { CGAL::make_lattice_surface_mesh(surface, field, CGAL::Frame_fields::parameters::features_angle(-5.)); }, "features angle"));
+  // features angle 0 on a smooth surface: every edge is sharp and every vertex a corner, more
+  // corners than particles asked for (the run went on for minutes and gigabytes); with more
+  // particles than corners, the corners no longer multiply the coarse levels' pairs
+  {
+    const Soup ball = sphere(4);
+    const Surface_field ball_field = Surface_field::from_tangent_frames(ball.points, ball.faces, [](const Eigen::Vector3d&, const Eigen::Vector3d&) {
+      CGAL::Frame_fields::Tangent_frame t;
+      t.direction = Eigen::Vector3d(0, 0, 1);
+      return t;
+    });
+    const auto every_edge = CGAL::Frame_fields::parameters::features_angle(0.);
+    VVM_CHECK(throws_invalid_argument([&] { CGAL::make_lattice_surface_mesh(ball.mesh(), ball_field, TLM::parameters::number_of_particles(500, every_edge)); }, "corners"));
+    TLM::Lattice_surface_mesh_report report;
+    const Surface_mesh m = CGAL::make_lattice_surface_mesh(ball.mesh(), ball_field,
+        TLM::parameters::number_of_particles(1500, TLM::parameters::report(&report, every_edge)));
+    std::cout << "  sphere, features angle 0, 1500 particles asked: " << report.number_of_particles << " particles, "
+              << report.number_of_sharp_edge_particles << " on the sharp edges, " << m.number_of_faces() << " triangles\n";
+    VVM_CHECK(report.number_of_sharp_edge_particles >= ball.points.size()); // every vertex a corner
+    VVM_CHECK(m.number_of_faces() > 0 && CGAL::is_closed(m));
+  }
   // the volume entry points refuse the surface's lattice
   VVM_CHECK(throws_invalid_argument([&] { TLMI::read_lattice_request(TLM::parameters::lattice(TLM::Lattice_type::HEXAGONAL)); }, "surface"));
   // a degenerate face, a frame field of the wrong size

@@ -232,6 +232,10 @@ Particles_in_domain<MeshDomain> lattice_particles(const MeshDomain& domain, cons
   check_particle_count(n, "the edge length " + readable(l));
   if(measures.volume * r.lattice.particles_per_cube / (l * l * l) < 1)
     fail("the edge length " + readable(l) + " is larger than the domain (under one lattice cell in it)");
+  // every corner is a particle: features detected at a small angle leave nothing to place
+  if(!(double(measures.number_of_corners) < n))
+    fail("the domain has " + std::to_string(measures.number_of_corners) + " corners, not fewer than the " + readable(n) +
+         " particles of the lattice: detect its features at a larger angle or ask for more particles");
   // n: the lattice's estimated count
   typedef Lattice_optimizer<FrameField, Domain_boundary<MeshDomain, K>, Point_3> Optimizer;
   // each optimizer gets the time left, less what the stages after it keep
@@ -247,7 +251,6 @@ Particles_in_domain<MeshDomain> lattice_particles(const MeshDomain& domain, cons
     r.options.multiresolution_levels = n >= 3200 ? 2 : n >= 400 ? 1 : 0;
   if(r.options.multiresolution_levels >= 0) {
     out.particles = optimizer(r.options)->run();
-    out.particles.multiresolution_levels = r.options.multiresolution_levels;
   } else {
     // BCC and FCC: where the domain is a box (in the field's space), the lattice settles whole
     // or with a partial layer (a dislocation) depending on how its coarsest lattice fits the
@@ -260,9 +263,8 @@ Particles_in_domain<MeshDomain> lattice_particles(const MeshDomain& domain, cons
     Lattice_options o = r.options;
     o.multiresolution_levels = n / std::pow(8., k0 + 1) >= 20 ? k0 + 1 : k0;
     std::unique_ptr<Optimizer> kept = optimizer(o);
-    int levels = o.multiresolution_levels;
     const double energy = kept->optimize();
-    if(o.multiresolution_levels > k0 && !kept->stopped()) {
+    if(kept->multiresolution_levels() > k0 && !kept->stopped()) {
       o.multiresolution_levels = k0;
       std::unique_ptr<Optimizer> other = optimizer(o);
       const double other_energy = other->optimize();
@@ -273,14 +275,12 @@ Particles_in_domain<MeshDomain> lattice_particles(const MeshDomain& domain, cons
       const int rounds = kept->number_of_rounds() + other->number_of_rounds();
       if(other_energy < energy) {
         kept = std::move(other);
-        levels = k0;
       }
       const int kept_rounds = kept->number_of_rounds();
       out.particles = kept->finish();
       out.particles.number_of_rounds += rounds - kept_rounds; // and the other's
     } else
       out.particles = kept->finish();
-    out.particles.multiresolution_levels = levels;
   }
   out.particles.time = timer.time();
   return out;
@@ -390,7 +390,10 @@ particles_of_request(const MeshDomain& domain, const FrameField& field, const La
  *       is kept and finished (its last round, the L-BFGS to convergence): in a box-shaped domain
  *       the lattice settles whole or with a partial layer depending on how its coarsest lattice
  *       fits the box, and the whole lattice has the lower energy. The visitor sees the rounds of
- *       both runs; `Lattice_particles_3::multiresolution_levels` tells the one kept.}
+ *       both runs; `Lattice_particles_3::multiresolution_levels` tells the one kept. Given or not,
+ *       a run starts from a finer level where the domain's corners (fixed particles at every level)
+ *       outnumber the coarsest lattice's own particles more than sixteen times: each would meet as many
+ *       times its share of neighbours there.}
  *     \cgalParamType{`int` in [0, 6]} \cgalParamDefault{see above (cubic lattice: 2 from 3,200 particles, 1 from 400, else 0)}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{number_of_iterations}
@@ -433,7 +436,8 @@ particles_of_request(const MeshDomain& domain, const FrameField& field, const La
  *
  * \return the particles with their kinds and features, \f$ l^* \f$, the final energy and the time
  * \throw std::invalid_argument before any optimization on a bad parameter, a degenerate frame,
- *   an empty domain, an edge length larger than the domain, or a request of more than
+ *   an empty domain, an edge length larger than the domain, no fewer particles than the domain
+ *   has corners (each corner is a particle), or a request of more than
  *   `Tetrahedral_lattice_meshing::maximum_number_of_particles` particles or of more memory than
  *   the machine has (`Tetrahedral_lattice_meshing::bytes_per_particle` each; the message gives
  *   the estimate)

@@ -137,7 +137,9 @@ struct Lattice_surface_mesh_report
  *
  * \return the triangle mesh; its vertices lie on `surface`
  * \throw std::invalid_argument before any work on a bad parameter, a surface with no face, a face
- *   that is no triangle or is degenerate, a non-finite coordinate, or a lattice that is not hexagonal
+ *   that is no triangle or is degenerate, a non-finite coordinate, a lattice that is not hexagonal,
+ *   or no fewer particles than the sharp edges have corners (each corner is a particle: a small
+ *   `features_angle` on a smooth surface makes most vertices corners)
  */
 template <class TriangleMesh, class FrameField, class NamedParameters = parameters::Default_named_parameters>
 CGAL::Surface_mesh<typename boost::property_traits<
@@ -190,6 +192,11 @@ make_lattice_surface_mesh(const TriangleMesh& surface, const FrameField& field,
   if(!(l < std::numeric_limits<double>::infinity())) fail("too few particles for the surface's corners");
   const double n = TLM::internal::lattice_particle_count(r.lattice, measures, l);
   TLM::internal::check_particle_count(n, "the edge length " + TLM::internal::readable(l));
+  // every corner is a particle: a features angle that makes most edges sharp leaves nothing to place
+  if(!(double(measures.number_of_corners) < n))
+    fail("the sharp edges have " + std::to_string(measures.number_of_corners) + " corners, not fewer than the " +
+         TLM::internal::readable(n) + " particles of the lattice: raise features_angle (0 makes every bent edge sharp) or " +
+         "ask for more particles");
   // from a coarsest lattice of at most 200 particles: from a random start at the finest level,
   // grains of different orientations meet in lines of defects
   if(r.options.multiresolution_levels < 0)

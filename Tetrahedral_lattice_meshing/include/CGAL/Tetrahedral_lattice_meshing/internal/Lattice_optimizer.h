@@ -158,9 +158,19 @@ public:
     timer_.start();
     const double sigma = o_.kernel_width > 0 ? o_.kernel_width : lattice_.sigma;
     const double radius = o_.neighbor_radius > 0 ? o_.neighbor_radius : lattice_.neighbor_radius;
-    double l = l_ * std::pow(2., o_.multiresolution_levels);
-    system_ = std::make_unique<System>(lattice_, field_, &boundary_, l, sigma, radius);
-    random_start(*system_);
+    double l = l_;
+    // the corners are particles at every level: where they outnumber a coarse level's own
+    // particles more than sixteen times (a features angle that makes most edges sharp), each meets
+    // as many times a lattice's neighbours there and the pairs outgrow the memory; the run
+    // then starts from the coarsest level where they do not
+    const std::size_t corners = boundary_.corners().size();
+    for(;;) {
+      l = l_ * std::pow(2., o_.multiresolution_levels);
+      system_ = std::make_unique<System>(lattice_, field_, &boundary_, l, sigma, radius);
+      random_start(*system_);
+      if(o_.multiresolution_levels == 0 || corners <= 16 * (system_->size() - corners)) break;
+      --o_.multiresolution_levels;
+    }
     for(int level = o_.multiresolution_levels; level >= 0; --level) {
       if(level < o_.multiresolution_levels) { // refine: the sites of the lattice of half the edge length
         auto finer = std::make_unique<System>(lattice_, field_, &boundary_, l / 2, sigma, radius);
@@ -197,6 +207,8 @@ public:
   void request_stop() { stop_requested_ = true; }
   /// the rounds run so far
   int number_of_rounds() const { return out_.number_of_rounds; }
+  /// the levels of the run: those asked for, fewer where the corners outnumber a coarse level
+  int multiresolution_levels() const { return o_.multiresolution_levels; }
 
   /// the last round (unless the time is up) and the particles
   Lattice_particles_3<Point_3> finish()
@@ -213,6 +225,7 @@ public:
     Lattice_particles_3<Point_3> out = out_;
     out.lattice = lattice_;
     out.edge_length = l_;
+    out.multiresolution_levels = o_.multiresolution_levels;
     for(std::size_t i = 0; i < system_->size(); ++i) {
       const Eigen::Vector3d& p = system_->points[i];
       out.points.emplace_back(p[0], p[1], p[2]);
