@@ -700,8 +700,9 @@ void test_bad_inputs()
   VVM_CHECK(throws_invalid_argument(run(TLM::parameters::edge_length(std::nan(""))), "edge length must be positive"));
   VVM_CHECK(throws_invalid_argument(run(TLM::parameters::edge_length(1e-5)), "GB of memory (at most"));
   VVM_CHECK(throws_invalid_argument(run(TLM::parameters::number_of_particles(std::size_t(0))), "at least 1"));
-  // the cube's 8 corners are particles: fewer particles asked for cannot hold them
-  VVM_CHECK(throws_invalid_argument(run(TLM::parameters::number_of_particles(std::size_t(6))), "8 corners"));
+  // the cube's 8 corners are particles: a lattice of fewer cannot hold them (BCC, l* 2.4 on the
+  // cube of side 2: 16 / l*^3 + 12 / l*^2 + 6 / l* + 1 = 6.7 particles, one lattice cell inside)
+  VVM_CHECK(throws_invalid_argument(run(TLM::parameters::edge_length(2.4)), "8 corners"));
   // (with a coarse edge length, so that a parameter wrongly accepted costs little)
   VVM_CHECK(throws_invalid_argument(run(TLM::parameters::kernel_width(-1., TLM::parameters::edge_length(0.5))),
                                     "kernel width"));
