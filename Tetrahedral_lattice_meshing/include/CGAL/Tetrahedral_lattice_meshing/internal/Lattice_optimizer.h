@@ -184,12 +184,14 @@ public:
         system_ = std::move(finer);
         l /= 2;
       }
-      // a volume lattice's coarsest level, from random positions, keeps each round's frames:
+      // a cubic lattice's coarsest level, from random positions, keeps each round's frames:
       // its moves span much of a spacing over which the field changes a lot, and the
       // first-order frames of the exact gradient then settle it into ill-fitting lattice rows
-      // whose dislocations the finer levels inherit (surface lattices: not measured, unchanged)
-      system_->frame_derivatives =
-          lattice_.is_surface_lattice() || level < o_.multiresolution_levels || o_.multiresolution_levels == 0;
+      // whose dislocations the finer levels inherit (BCC and FCC keep the exact gradient: with
+      // the frozen frames, BCC left a worse layer in one of three starts in Fig. 4.8's field;
+      // surface lattices: not measured, unchanged)
+      system_->frame_derivatives = lattice_.type != Lattice_type::CUBIC || level < o_.multiresolution_levels ||
+                                   o_.multiresolution_levels == 0;
       const int max_rounds = o_.number_of_iterations >= 0 ? o_.number_of_iterations : (level == o_.multiresolution_levels ? 16 : 8);
       out_.number_of_rounds += optimize_level(*system_, level, max_rounds, level > 0);
       if(must_stop()) {
