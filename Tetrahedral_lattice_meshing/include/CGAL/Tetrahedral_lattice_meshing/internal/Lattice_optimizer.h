@@ -187,9 +187,8 @@ public:
       // a cubic lattice's coarsest level, from random positions, keeps each round's frames:
       // its moves span much of a spacing over which the field changes a lot, and the
       // first-order frames of the exact gradient then settle it into ill-fitting lattice rows
-      // whose dislocations the finer levels inherit (BCC and FCC keep the exact gradient: with
-      // the frozen frames, BCC left a worse layer in one of three starts in Fig. 4.8's field;
-      // surface lattices: not measured, unchanged)
+      // whose dislocations the finer levels inherit (BCC, FCC and surface lattices keep the exact
+      // gradient: frozen frames did not help them, see benchmark/Hex_dominant_meshing/RESULTS.md)
       system_->frame_derivatives = lattice_.type != Lattice_type::CUBIC || level < o_.multiresolution_levels ||
                                    o_.multiresolution_levels == 0;
       const int max_rounds = o_.number_of_iterations >= 0 ? o_.number_of_iterations : (level == o_.multiresolution_levels ? 16 : 8);
