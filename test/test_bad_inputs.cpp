@@ -383,6 +383,8 @@ void test_hex_dominant()
   refused(entry, "quality_bound 2", {"quality bound"}, [&] { CGAL::make_hex_dominant_mesh_3<C3T3>(domain, Constant_field(), HDM::parameters::quality_bound(2.)); });
   refused(entry, "boundary_distance -1", {"boundary distance"}, [&] { CGAL::make_hex_dominant_mesh_3<C3T3>(domain, Constant_field(), HDM::parameters::boundary_distance(-1.)); });
   refused(entry, "BCC lattice", {"cubic lattice"}, [&] { CGAL::make_hex_dominant_mesh_3<C3T3>(domain, Constant_field(), TLM::parameters::lattice(TLM::Lattice_type::BCC)); });
+  refused(entry, "maximum_size_ratio 0.5", {"maximum_size_ratio"}, [&] { CGAL::make_hex_dominant_mesh_3<C3T3>(domain, Constant_field(), CGAL::Frame_fields::parameters::maximum_size_ratio(0.5)); });
+  refused(entry, "maximum_size_ratio NaN", {"maximum_size_ratio"}, [&] { CGAL::make_hex_dominant_mesh_3<C3T3>(domain, Constant_field(), CGAL::Frame_fields::parameters::maximum_size_ratio(nan)); });
 
   const std::string tets = "tets_to_hex_dominant (indices)";
   std::vector<Point> nan_points = tet_points, flat_points = tet_points;

@@ -15,6 +15,8 @@
 
 #include <CGAL/make_mesh_3.h> // first: it brings the TBB headers CGAL's other Mesh_3 headers need
 
+#include <CGAL/Frame_fields/scale_corrected_frame_field.h>
+
 #include "box_surface.h"
 #include "command_line.h"
 #include "json_lines.h"
@@ -82,7 +84,7 @@ const char* usage =
     "                            [--field cross|identity|fig4.15a..f|cylinder|cylinder-scaled]\n"
     "                            [--q-bound X | --q-bound-sweep] [--threads N] [--json FILE] [--out-dir DIR]\n"
     "                            [--boundary-distance D] [--seed N] [--levels K] [--rounds N]\n"
-    "                            [--sizing uniform|thickness]\n"
+    "                            [--sizing uniform|thickness] [--scale-correction RATIO]\n"
     "                            [--classify] [--verbose]\n"
     "  INPUT  a closed triangle surface (OFF, OBJ, PLY, STL, ...), or cube, warped-cube or cylinder:\n"
     "         cube is [-1,1]^3 ([0.1,1.1]^3 with fig4.15c and fig4.15d); warped-cube is T [-1,1]^3\n"
@@ -111,6 +113,11 @@ const char* usage =
     "                      the coarsest level, 8 after)\n"
     "  --sizing S          uniform (default), or thickness: the field's frames scaled by the walls' and\n"
     "                      gaps' thickness, 3 cells across, graded by 0.3 (CGAL::Thickness_sizing_field_3)\n"
+    "  --scale-correction R  the field's scales corrected so that the lattice follows its turning\n"
+    "                      (Frame_fields::scale_corrected_frame_field, scales within a ratio R >= 1;\n"
+    "                      default 2 for the cross field, as make_hex_dominant_mesh_3's, none for the\n"
+    "                      others; 1 for none); a closed-form field is sampled at the vertices of the\n"
+    "                      cross field's mesh first\n"
     "  --classify          after each merging, the volume not in hexahedra by cause: a hexahedron\n"
     "                      candidate under Q_bound, overlapping a kept one or not conforming; no\n"
     "                      candidate near a singular edge, at the boundary, at a particle off the lattice\n"
@@ -131,7 +138,7 @@ struct Options : vvm_benchmark::Common_options
 {
   std::string field, sizing = "uniform";
   std::size_t particles = 30000;
-  double q_bound = 0.5, boundary_distance = 0;
+  double q_bound = 0.5, boundary_distance = 0, scale_correction = -1; // -1: the default
   bool sweep = false, classify = false;
   int levels = -1, rounds = -1;
 };
@@ -152,6 +159,7 @@ Options parse_command_line(int argc, char** argv)
     } else if(c.is("--levels")) o.levels = c.number_in<int>(0, 6);
     else if(c.is("--rounds")) o.rounds = c.number_in<int>(0, 1000);
     else if(c.is("--sizing")) o.sizing = c.one_of({"uniform", "thickness"});
+    else if(c.is("--scale-correction")) o.scale_correction = c.number_in<double>(1, 1000);
     else c.common(o);
   }
   vvm_benchmark::Command_line::require_input(o);
@@ -169,6 +177,7 @@ Options parse_command_line(int argc, char** argv)
   if(o.field.rfind("cylinder", 0) == 0 && o.input != "cylinder")
     throw Input_error("--field " + o.field + " is defined on INPUT cylinder");
   if(o.features_angle < 0) o.features_angle = builtin ? 60. : 0.;
+  if(o.scale_correction < 0) o.scale_correction = o.field == "cross" ? 2. : 1.;
   return o;
 }
 
@@ -178,11 +187,30 @@ Field make_field(const Options& o, const Domain& domain, double volume)
   if(const auto T = constant_frame(f)) return Field([T = *T](const Point_3&) { return T; });
   if(f == "fig4.15c") return FF::linear_scale_frame_field<K>();
   if(f == "fig4.15d") return FF::single_direction_anisotropy_frame_field<K>();
-  if(f == "cylinder") return FF::cylinder_frame_field<K>(1., false);
-  if(f == "cylinder-scaled") return FF::cylinder_frame_field<K>(1., true);
+  if(o.scale_correction == 1) {
+    if(f == "cylinder") return FF::cylinder_frame_field<K>(1., false);
+    if(f == "cylinder-scaled") return FF::cylinder_frame_field<K>(1., true);
+  }
   // cross: on a mesh about as fine as the lattice
   const double size = std::cbrt(volume / double(o.particles));
   auto cross = std::make_shared<FF::Discrete_frame_field_3<K>>(TLM::internal::domain_cross_field(domain, size));
+  if(o.scale_correction > 1) {
+    if(f != "cross") { // the closed-form field at the cross field's vertices
+      const Field closed_form = f == "cylinder" ? FF::cylinder_frame_field<K>(1., false)
+                              : f == "cylinder-scaled" ? FF::cylinder_frame_field<K>(1., true)
+                                                       : make_field([&] { Options c = o; c.scale_correction = 1; return c; }(), domain, volume);
+      std::vector<Eigen::Matrix3d> frames;
+      for(const Point_3& p : cross->points()) frames.push_back(closed_form.T(p));
+      *cross = FF::Discrete_frame_field_3<K>(cross->points(), cross->cells(), std::move(frames), FF::Frame_location::VERTICES);
+    }
+    CGAL::Real_timer timer;
+    timer.start();
+    auto corrected = FF::scale_corrected_frame_field(*cross, FF::parameters::maximum_size_ratio(o.scale_correction));
+    std::cout << "scale correction: integrability error " << corrected.integrability_error_before << " -> "
+              << corrected.integrability_error_after << ", " << corrected.number_of_clamped_scales << " of "
+              << 3 * cross->points().size() << " scales clamped, " << timer.time() << " s\n";
+    *cross = std::move(corrected.field);
+  }
   return Field([cross](const Point_3& p) { return cross->T(p); });
 }
 
@@ -355,7 +383,7 @@ int run(const Options& o)
                      s.number_of_nonconforming_faces, ratio, field_time + report.particle_time,
                      report.tetrahedra_time, report.merge_time, total});
     json.write(vvm_benchmark::Json_line()
-                   .add("model", model).add("field", o.field).add("sizing", o.sizing).add("q_bound", q)
+                   .add("model", model).add("field", o.field).add("sizing", o.sizing).add("scale_correction", o.scale_correction).add("q_bound", q)
                    .add("n_particles", mesh.points.size()).add("n_hex", s.number_of_hexahedra)
                    .add("n_prism", s.number_of_prisms).add("n_pyramid", s.number_of_pyramids)
                    .add("n_tet", s.number_of_tetrahedra).add("h_vol_percent", s.hexahedron_volume_percent)

@@ -9,6 +9,7 @@
 #define CGAL_MAKE_HEX_DOMINANT_MESH_3_H
 
 #include <CGAL/Hex_dominant_mesh_3.h>
+#include <CGAL/Frame_fields/parameters.h>
 #include <CGAL/Hex_dominant_meshing/parameters.h>
 #include <CGAL/tets_to_hex_dominant.h>
 #include <CGAL/VVM/internal/Lattice_tetrahedralization.h>
@@ -137,7 +138,11 @@ VVM::internal::Lattice_request read_hex_dominant_request(const NamedParameters& 
   const double boundary_distance = choose_parameter(get_parameter(np, internal_np::boundary_distance), 0.);
   if(!(boundary_distance >= 0) || !std::isfinite(boundary_distance))
     throw std::invalid_argument("make_hex_dominant_mesh_3: the boundary distance must be non-negative and finite");
-  return VVM::internal::read_lattice_request(TLM::parameters::lattice(TLM::Lattice_type::CUBIC, np));
+  VVM::internal::Lattice_request r = VVM::internal::read_lattice_request(TLM::parameters::lattice(TLM::Lattice_type::CUBIC, np));
+  r.maximum_scale_ratio = choose_parameter(get_parameter(np, Frame_fields::internal_np::maximum_size_ratio), 2.);
+  if(!(r.maximum_scale_ratio >= 1) || !std::isfinite(r.maximum_scale_ratio))
+    throw std::invalid_argument("make_hex_dominant_mesh_3: maximum_size_ratio must be at least 1 and finite");
+  return r;
 }
 
 } // namespace internal
@@ -227,7 +232,19 @@ make_hex_dominant_mesh_3(const MeshDomain& domain, const FrameField& field,
  * the same with the frame field of the named parameter `Hex_dominant_meshing::parameters::frame_field`
  * or, without it, the boundary-aligned cross field of `Frame_fields::generate_cross_field_3()`
  * (unit frames, one axis on the surface normal and along the feature curves), computed on a
- * `make_mesh_3()` mesh of `domain` whose edges are about \f$ l^* \f$ long.
+ * `make_mesh_3()` mesh of `domain` whose edges are about \f$ l^* \f$ long, then scale-corrected
+ * by `Frame_fields::scale_corrected_frame_field()` so that the lattice's layers can follow its
+ * turning (fewer prisms and pyramids filling the gaps of a fraction of a layer).
+ *
+ * \cgalNamedParamsBegin
+ *   \cgalParamNBegin{the named parameters of the overload above}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{Frame_fields::parameters::maximum_size_ratio}
+ *     \cgalParamDescription{the largest ratio of two scales of the generated cross field's scale
+ *       correction; 1 for none. Ignored with `frame_field`; skipped once `maximum_running_time` is reached}
+ *     \cgalParamType{`double`, at least 1} \cgalParamDefault{2}
+ *   \cgalParamNEnd
+ * \cgalNamedParamsEnd
  */
 template <class C3T3, class MeshDomain, class T, class Tag, class Base>
 Hex_dominant_mesh_3<typename MeshDomain::R::Point_3>

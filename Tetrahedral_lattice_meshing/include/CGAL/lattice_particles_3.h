@@ -9,6 +9,7 @@
 
 #include <CGAL/Tetrahedral_lattice_meshing/internal/Domain_boundary.h>
 #include <CGAL/Tetrahedral_lattice_meshing/internal/Domain_cross_field.h>
+#include <CGAL/Frame_fields/scale_corrected_frame_field.h>
 #include <CGAL/Tetrahedral_lattice_meshing/internal/Lattice_optimizer.h>
 #include <CGAL/Tetrahedral_lattice_meshing/Lattice.h>
 #include <CGAL/Tetrahedral_lattice_meshing/lattice_particle_types.h>
@@ -110,6 +111,9 @@ struct Lattice_request
   /// of the time limit, kept per particle for the stages after the particles that always run
   /// (their connection into tets): the particle rounds stop that much earlier
   double seconds_kept_per_particle = 0;
+  /// the generated cross field's scale correction (`Frame_fields::scale_corrected_frame_field()`):
+  /// the largest ratio of two scales; 1 for none
+  double maximum_scale_ratio = 1;
 };
 
 /// (`surface`: for `make_lattice_surface_mesh()`, whose lattice is the hexagonal one, which the
@@ -292,7 +296,11 @@ Frame_fields::Discrete_frame_field_3<typename Kernel_traits<typename MeshDomain:
 default_frame_field(const MeshDomain& domain,
                                                                                 const Lattice_request& r)
 {
-  return domain_cross_field(domain, edge_length_from_box(domain, 1., r), r.options.maximum_running_time);
+  const VVM::internal::Time_limit limit(r.options.maximum_running_time);
+  auto field = domain_cross_field(domain, edge_length_from_box(domain, 1., r), r.options.maximum_running_time);
+  if(r.maximum_scale_ratio > 1 && !limit.is_reached()) // a mesh needs no correction
+    field = Frame_fields::scale_corrected_frame_field(field, Frame_fields::parameters::maximum_size_ratio(r.maximum_scale_ratio)).field;
+  return field;
 }
 
 /// `r` with the time `limit` leaves as its time limit: what the stages after the field get

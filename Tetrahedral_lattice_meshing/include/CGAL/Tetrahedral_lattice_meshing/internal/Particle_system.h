@@ -462,10 +462,25 @@ public:
   }
 
 private:
-  // B's derivatives at the particles by central differences (steps of 1e-3 l* in the
-  // field's space), kept only if the frames stretch (B^T B is not the same multiple of the
-  // identity at every particle) and some derivative is not 0; and the positions they were
-  // taken at
+  // entrywise, the smaller of two differences of the same sign, else 0 (the minmod limiter):
+  // the slope of a smooth field, and the smooth side of a jump
+  static Eigen::Matrix3d minmod(const Eigen::Matrix3d& forward, const Eigen::Matrix3d& backward)
+  {
+    Eigen::Matrix3d d;
+    for(int r = 0; r < 3; ++r)
+      for(int c = 0; c < 3; ++c) {
+        const double f = forward(r, c), g = backward(r, c);
+        d(r, c) = f * g <= 0 ? 0. : std::abs(f) < std::abs(g) ? f : g;
+      }
+    return d;
+  }
+
+  // B's derivatives at the particles by one-sided differences (steps of 1e-3 l* in the
+  // field's space) joined by the minmod limiter: a field given on a mesh (piecewise constant,
+  // or with a smooth factor) jumps where the nearest vertex changes, and the difference
+  // across a jump is no slope; kept only if the frames stretch (B^T B is not the same multiple
+  // of the identity at every particle) and some derivative is not 0; and the positions they
+  // were taken at
   void build_frame_derivatives()
   {
     const std::size_t n = points.size();
@@ -495,7 +510,7 @@ private:
       for(int c = 0; c < 3; ++c) {
         Eigen::Vector3d e = Eigen::Vector3d::Zero();
         e[c] = step;
-        derivatives_[i][c] = (B(points[i] + e) - B(points[i] - e)) * (l_ / (2 * step));
+        derivatives_[i][c] = minmod(B(points[i] + e) - b, b - B(points[i] - e)) * (l_ / step);
         if(derivatives_[i][c].norm() > 1e-9 * b.norm()) varies[i] = 1;
       }
       built_at_[i] = points[i] / l_;

@@ -145,7 +145,9 @@ lattice_tetrahedralization(C3T3& c3t3, const MeshDomain& domain, const FrameFiel
                                 "(edge length too large for it?)");
   if(!isotropic && (options.for_tetrahedral_lattice ? !time_limit.is_reached() : !skip_stage())) {
     typedef TLM_internal::Metric_Delaunay_flips<C3T3> Flips;
-    const std::size_t max_flips = 20 * c3t3.number_of_cells_in_complex();
+    // a field that jumps from vertex to vertex (one given on a mesh, scaled) can make the flips
+    // cycle: the bound keeps their time to about that of connecting the particles
+    const std::size_t max_flips = 2 * c3t3.number_of_cells_in_complex();
     Flips flips(c3t3, B, options.for_tetrahedral_lattice ? Flips::Flat_boundary_cells::FORBIDDEN
                                                          : Flips::Flat_boundary_cells::ALLOWED);
     r.number_of_metric_flips = flips.run(max_flips);
