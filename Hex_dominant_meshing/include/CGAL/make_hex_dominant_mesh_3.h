@@ -238,6 +238,8 @@ make_hex_dominant_mesh_3(const MeshDomain& domain, const FrameField& field,
  *
  * \cgalNamedParamsBegin
  *   \cgalParamNBegin{the named parameters of the overload above}
+ *     \cgalParamDescription{`frame_field` here, and those of `lattice_particles_3()` and
+ *       `tets_to_hex_dominant()`, `boundary_distance`, `visitor`, ...}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{Frame_fields::parameters::maximum_size_ratio}
  *     \cgalParamDescription{the largest ratio of two scales of the generated cross field's scale
