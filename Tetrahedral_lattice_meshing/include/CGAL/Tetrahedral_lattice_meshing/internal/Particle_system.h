@@ -501,6 +501,9 @@ private:
                               return std::abs(s - scale[0]) <= 1e-9 * scale[0];
                             }));
     if(conformal) return;
+    // the surface lattice keeps the central differences its results were measured with (its
+    // field is interpolated over faces); the limiter there is not measured yet
+    const bool surface_central_differences = lattice_.is_surface_lattice();
     derivatives_.resize(n);
     built_at_.resize(n);
     std::vector<char> varies(n, 0);
@@ -510,7 +513,9 @@ private:
       for(int c = 0; c < 3; ++c) {
         Eigen::Vector3d e = Eigen::Vector3d::Zero();
         e[c] = step;
-        derivatives_[i][c] = minmod(B(points[i] + e) - b, b - B(points[i] - e)) * (l_ / step);
+        const Eigen::Matrix3d plus = B(points[i] + e), minus = B(points[i] - e);
+        derivatives_[i][c] = surface_central_differences ? Eigen::Matrix3d((plus - minus) * (l_ / (2 * step)))
+                                                         : Eigen::Matrix3d(minmod(plus - b, b - minus) * (l_ / step));
         if(derivatives_[i][c].norm() > 1e-9 * b.norm()) varies[i] = 1;
       }
       built_at_[i] = points[i] / l_;
