@@ -196,9 +196,9 @@ Field make_field(const Options& o, const Domain& domain, double volume)
   auto cross = std::make_shared<FF::Discrete_frame_field_3<K>>(TLM::internal::domain_cross_field(domain, size));
   if(o.scale_correction > 1) {
     if(f != "cross") { // the closed-form field at the cross field's vertices
-      const Field closed_form = f == "cylinder" ? FF::cylinder_frame_field<K>(1., false)
-                              : f == "cylinder-scaled" ? FF::cylinder_frame_field<K>(1., true)
-                                                       : make_field([&] { Options c = o; c.scale_correction = 1; return c; }(), domain, volume);
+      Options uncorrected = o;
+      uncorrected.scale_correction = 1;
+      const Field closed_form = make_field(uncorrected, domain, volume);
       std::vector<Eigen::Matrix3d> frames;
       for(const Point_3& p : cross->points()) frames.push_back(closed_form.T(p));
       *cross = FF::Discrete_frame_field_3<K>(cross->points(), cross->cells(), std::move(frames), FF::Frame_location::VERTICES);
