@@ -193,7 +193,10 @@ Field make_field(const Options& o, const Domain& domain, double volume)
   }
   // cross: on a mesh about as fine as the lattice
   const double size = std::cbrt(volume / double(o.particles));
+  CGAL::Real_timer cross_timer;
+  cross_timer.start();
   auto cross = std::make_shared<FF::Discrete_frame_field_3<K>>(TLM::internal::domain_cross_field(domain, size));
+  std::cout << "cross field: " << cross->points().size() << " vertices, " << cross_timer.time() << " s\n";
   if(o.scale_correction > 1) {
     if(f != "cross") { // the closed-form field at the cross field's vertices
       Options uncorrected = o;

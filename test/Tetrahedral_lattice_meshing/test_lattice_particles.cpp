@@ -142,6 +142,17 @@ Implicit_domain sphere_domain()
       CGAL::parameters::relative_error_bound = 1e-9);
 }
 
+// the share of the box that the default cross field's mesh size is taken from: the unit ball in
+// the implicit domain's box, [-1.21, 1.21]^3, is 4/3 pi / 2.42^3 = 0.2956 of it
+void test_domain_volume_fraction()
+{
+  const double fraction = TLM::internal::domain_volume_fraction(sphere_domain());
+  const double exact = 4. / 3. * CGAL_PI / std::pow(2.42, 3);
+  std::cout << "ball in its box: sampled share " << fraction << ", exact " << exact << "\n";
+  VVM_CHECK_CLOSE(fraction, exact, 0.015);
+  VVM_CHECK_EQUAL(TLM::internal::domain_volume_fraction(sphere_domain()), fraction); // fixed seed
+}
+
 void test_particle_kinds_on_sphere()
 {
   const Implicit_domain domain = sphere_domain();
@@ -767,6 +778,7 @@ int main(int argc, char** argv)
   return vvm_test::run(argc, argv, "test_lattice_particles", {
       {"particle_kinds_on_cube", test_particle_kinds_on_cube},
       {"particle_kinds_on_sphere", test_particle_kinds_on_sphere},
+      {"domain_volume_fraction", test_domain_volume_fraction},
       {"thread_independence", test_thread_independence},
       {"determinism", test_determinism},
       {"multiresolution_choice", test_multiresolution_choice},

@@ -371,6 +371,8 @@ class TestErrors:
             vvm.tet_mesh(surface, vertices=500, sizing="curvature")
         with pytest.raises(ValueError, match="unknown sizing"):
             vvm.hex_dominant(surface, particles=500, sizing="curvature")
+        with pytest.raises(ValueError, match="size ratio"):
+            vvm.hex_dominant(surface, particles=500, maximum_size_ratio=float("nan"))
 
     def test_bad_meshes(self):
         points = np.array([[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1.], [0.2, 0.2, -1]])

@@ -185,6 +185,12 @@ def check_thickness_sizing():
          "--features-angle", "0", "--json", work("hexdom.json"), "--quiet"])
     r = report(work("hexdom.json"))
     require(r["n_hex"] > 0 and r["n_inverted"] == 0, f"hexdom report {r}")
+    # the cross field's scale correction reaches the thickness-scaled field: without it, other particles
+    run(["hexdom", sink, "-o", work("hexdom_uncorrected.vtu"), "--particles", "2000", "--sizing", "thickness",
+         "--features-angle", "0", "--maximum-size-ratio", "1", "--quiet"])
+    corrected, uncorrected = meshio.read(work("hexdom.vtu")).points, meshio.read(work("hexdom_uncorrected.vtu")).points
+    require(corrected.shape != uncorrected.shape or not np.array_equal(corrected, uncorrected),
+            "--maximum-size-ratio 1 gave the same hex-dominant mesh as the default ratio 2")
 
 
 def write_labelled_inr(path, n=24):
@@ -479,6 +485,7 @@ def check_bad_inputs():
         (["tet", data("cube.off"), "-o", out, "--seed", "-3"], "seed"),
         (["tet", data("cube.off"), "-o", out, "--sizing", "magic"], "unknown sizing"),
         (["hexdom", data("cube.off"), "-o", out, "--sizing", "magic"], "unknown sizing"),
+        (["hexdom", data("cube.off"), "-o", out, "--maximum-size-ratio", "0.5"], "size ratio"),
         (["tet", data("cube.off"), "-o", out, "--time-limit", "-1"], "time-limit"),
         (["quality", work("missing.mesh")], "cannot open"),
         (["surface", work("missing.off"), "-o", surface_out], "cannot open"),

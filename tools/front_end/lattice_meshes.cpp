@@ -31,10 +31,11 @@ namespace HDM = CGAL::Hex_dominant_meshing;
 /// calls `run(field)` with the field `name` names: identity, a frame-field file, or (cross)
 /// no field, for the packages' own boundary-aligned cross field. With `sizing`, the field's
 /// frames scaled by it (`Scaled_frame_field_3`); the cross field is then made here, on a mesh
-/// of `domain` of edge `cross_size`.
+/// of `domain` of edge `cross_size`, its scales corrected within `cross_scale_ratio` (1: none)
+/// as the packages do it.
 template <class Run>
 auto with_field(const std::string& name, const Thickness_size* sizing, const Surface_domain& domain, double cross_size,
-                double time_limit, const Run& run)
+                double cross_scale_ratio, double time_limit, const Run& run)
 {
   if(sizing != nullptr) {
     typedef FF::Closed_form_frame_field_3<Kernel> Field;
@@ -42,7 +43,8 @@ auto with_field(const std::string& name, const Thickness_size* sizing, const Sur
     try {
       if(name != "identity") {
         const auto frames = std::make_shared<const FF::Discrete_frame_field_3<Kernel>>(
-            name == "cross" ? TLM::internal::domain_cross_field(domain, cross_size, time_limit) : read_frame_field_file(name));
+            name == "cross" ? TLM::internal::domain_cross_field(domain, cross_size, time_limit, cross_scale_ratio)
+                            : read_frame_field_file(name));
         field = Field([frames](const Point& p) { return frames->T(p); });
       }
     } catch(const std::invalid_argument& e) {
@@ -75,7 +77,7 @@ Volume_mesh lattice_tet_mesh(const Surface_source& input, const Tet_options& o, 
   const auto sizing = relative_sizing(o.sizing, in);
   // the cross field's mesh about as fine as a BCC lattice of the requested count
   const double cross_size = o.size.size > 0 ? o.size.size : std::cbrt(2 * in.volume / double(o.size.vertices));
-  Surface_c3t3 c3t3 = with_field(o.field, sizing.get(), *in.domain, cross_size, o.time_limit, [&](const auto* field) {
+  Surface_c3t3 c3t3 = with_field(o.field, sizing.get(), *in.domain, cross_size, 1., o.time_limit, [&](const auto* field) {
     try {
       if(o.size.size > 0) {
         auto sized = TLM::parameters::edge_length(o.size.size, np);
@@ -108,6 +110,8 @@ Volume_mesh hex_dominant_mesh(const Surface_source& input, const Hex_dominant_op
   if(!(o.quality_bound >= 0 && o.quality_bound <= 1)) throw Input_error("the quality bound (--q-bound) must be in [0, 1]");
   if(!(o.boundary_distance >= 0) || !std::isfinite(o.boundary_distance))
     throw Input_error("the boundary distance (--boundary-distance) must be non-negative and finite");
+  if(!(o.maximum_size_ratio >= 1) || !std::isfinite(o.maximum_size_ratio))
+    throw Input_error("the maximum size ratio (--maximum-size-ratio) must be at least 1 and finite");
   const auto threads = internal::thread_limit(o.threads);
   internal::Surface_input in(input, o.features_angle);
   const internal::Stage stage(progress, "hexdom");
@@ -116,12 +120,15 @@ Volume_mesh hex_dominant_mesh(const Surface_source& input, const Hex_dominant_op
       o.quality_bound,
       internal::HDM::parameters::boundary_distance(
           o.boundary_distance,
-          internal::TLM::parameters::number_of_threads(
-              o.threads, CGAL::parameters::random_seed(o.seed).maximum_running_time(o.time_limit).visitor(
-                             internal::progress_visitor(stage))))));
+          internal::FF::parameters::maximum_size_ratio(
+              o.maximum_size_ratio,
+              internal::TLM::parameters::number_of_threads(
+                  o.threads, CGAL::parameters::random_seed(o.seed).maximum_running_time(o.time_limit).visitor(
+                                 internal::progress_visitor(stage)))))));
   const auto sizing = internal::relative_sizing(o.sizing, in);
   const double cross_size = o.size.size > 0 ? o.size.size : std::cbrt(in.volume / double(o.size.vertices));
-  Volume_mesh mesh = internal::with_field(o.field, sizing.get(), *in.domain, cross_size, o.time_limit, [&](const auto* field) {
+  Volume_mesh mesh = internal::with_field(o.field, sizing.get(), *in.domain, cross_size, o.maximum_size_ratio, o.time_limit,
+                                          [&](const auto* field) {
     try {
       if(o.size.size > 0) {
         auto sized = internal::TLM::parameters::edge_length(o.size.size, np);

@@ -96,6 +96,9 @@ struct Hex_dominant_options
   double features_angle = 60;
   std::string field = "cross";
   std::string sizing = "uniform"; ///< uniform, or thickness: the field's frames scaled as `Tet_options::sizing`
+  /// the cross field's scale correction: scales within this ratio (1: none), as
+  /// `Frame_fields::parameters::maximum_size_ratio` of make_hex_dominant_mesh_3
+  double maximum_size_ratio = 2;
   int threads = 0;
   unsigned int seed = 0;
   double time_limit = 0;       ///< seconds of make_hex_dominant_mesh_3 (field included); 0: none

@@ -254,12 +254,13 @@ py::dict tet_mesh(const py::object& surface, const std::string& method, std::siz
 
 py::dict hex_dominant(const py::object& surface, std::size_t particles, double size, double q_bound,
                       double boundary_distance, double features_angle, const std::string& field,
-                      const std::string& sizing, int threads, unsigned int seed, double time_limit,
-                      const py::object& progress)
+                      const std::string& sizing, double maximum_size_ratio, int threads, unsigned int seed,
+                      double time_limit, const py::object& progress)
 {
   const vvm::Surface_source source = surface_source(surface);
   vvm::Hex_dominant_options o;
   o.sizing = sizing;
+  o.maximum_size_ratio = maximum_size_ratio;
   o.time_limit = time_limit;
   o.size = mesh_size(size, particles);
   o.quality_bound = q_bound;
@@ -484,8 +485,8 @@ PYBIND11_MODULE(_vvm, m)
   m.def("tet_mesh", &tet_mesh, arg("surface"), arg("method"), arg("vertices"), arg("size"), arg("features_angle"),
         arg("field"), arg("sizing"), arg("threads"), arg("seed"), arg("time_limit"), arg("progress"));
   m.def("hex_dominant", &hex_dominant, arg("surface"), arg("particles"), arg("size"), arg("q_bound"),
-        arg("boundary_distance"), arg("features_angle"), arg("field"), arg("sizing"), arg("threads"), arg("seed"), arg("time_limit"),
-        arg("progress"));
+        arg("boundary_distance"), arg("features_angle"), arg("field"), arg("sizing"), arg("maximum_size_ratio"),
+        arg("threads"), arg("seed"), arg("time_limit"), arg("progress"));
   m.def("surface_mesh", &surface_mesh, arg("surface"), arg("vertices"), arg("size"), arg("field"),
         arg("maximum_anisotropy"), arg("maximum_size_ratio"), arg("features_angle"), arg("threads"), arg("seed"),
         arg("time_limit"), arg("progress"));

@@ -70,7 +70,8 @@ inline const char* tet_usage =
 inline const char* hexdom_usage =
     "usage: vvm-mesh hexdom INPUT -o OUT [--particles N | --size H] [--q-bound Q] [--boundary-distance D]\n"
     "                       [--features-angle DEG] [--field cross|identity|FILE] [--threads N] [--seed N]\n"
-    "                       [--sizing uniform|thickness] [--time-limit S] [--json FILE] [--quiet]\n"
+    "                       [--sizing uniform|thickness] [--maximum-size-ratio R] [--time-limit S]\n"
+    "                       [--json FILE] [--quiet]\n"
     "  INPUT               a closed triangle surface (OFF, OBJ, PLY, STL, ...)\n"
     "  -o OUT              the mesh: .mesh, .msh or .vtu (hexahedra, prisms, pyramids, tetrahedra)\n"
     "  --particles N       the number of cubic-lattice particles sought (default 30000)\n"
@@ -84,6 +85,8 @@ inline const char* hexdom_usage =
     "  --sizing S          uniform (default), or thickness: the field's frames scaled as for tet (the\n"
     "                      lattice breaks into non-hex cells where its size changes: on parts with\n"
     "                      walls of very different thicknesses, far fewer hexahedra)\n"
+    "  --maximum-size-ratio R  the cross field's scales are corrected so that the lattice's layers\n"
+    "                      follow its turning, within a ratio R of each other (default 2; 1: none)\n"
     "  --time-limit S      stop after S seconds (field, particles, merging), with a valid mesh whose\n"
     "                      unmerged tets stay tetrahedra (default 0: none)\n"
     "  --threads N, --seed N, --json FILE, --quiet  as for tet\n";
@@ -221,7 +224,7 @@ inline Arguments parse(int argc, const char* const* argv)
       {"tet", {"--method", "--size", "--vertices", "--features-angle", "--field", "--sizing", "--threads", "--seed",
                "--time-limit"}},
       {"hexdom", {"--particles", "--size", "--q-bound", "--boundary-distance", "--features-angle", "--field",
-                  "--sizing", "--threads", "--seed", "--time-limit"}},
+                  "--sizing", "--maximum-size-ratio", "--threads", "--seed", "--time-limit"}},
       {"optimize", {"--features-angle", "--boundary-distance", "--threads", "--seed", "--time-limit"}},
       {"quality", {}},
       {"field", {"--size", "--vertices", "--features-angle", "--seed", "--time-limit"}},
@@ -306,6 +309,7 @@ inline vvm::Hex_dominant_options hex_dominant_options(const Arguments& a)
   o.features_angle = number<double>(a, "--features-angle", o.features_angle);
   o.field = text(a, "--field", o.field);
   o.sizing = text(a, "--sizing", o.sizing);
+  o.maximum_size_ratio = number<double>(a, "--maximum-size-ratio", o.maximum_size_ratio);
   o.threads = number<int>(a, "--threads", 0);
   o.seed = seed(a);
   o.time_limit = time_limit(a);

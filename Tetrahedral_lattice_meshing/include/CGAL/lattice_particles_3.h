@@ -9,7 +9,6 @@
 
 #include <CGAL/Tetrahedral_lattice_meshing/internal/Domain_boundary.h>
 #include <CGAL/Tetrahedral_lattice_meshing/internal/Domain_cross_field.h>
-#include <CGAL/Frame_fields/scale_corrected_frame_field.h>
 #include <CGAL/Tetrahedral_lattice_meshing/internal/Lattice_optimizer.h>
 #include <CGAL/Tetrahedral_lattice_meshing/Lattice.h>
 #include <CGAL/Tetrahedral_lattice_meshing/lattice_particle_types.h>
@@ -291,16 +290,16 @@ Particles_in_domain<MeshDomain> lattice_particles(const MeshDomain& domain, cons
 }
 
 /// the field of the overloads without one: the domain's cross field, on a mesh about as fine as the lattice
+/// (by the domain's volume, not its box's: a domain that fills little of its box would get a coarse
+/// field, and the lattice loses layers where that field's turns are coarse), its scales corrected
+/// within `r.maximum_scale_ratio`
 template <class MeshDomain>
 Frame_fields::Discrete_frame_field_3<typename Kernel_traits<typename MeshDomain::R::Point_3>::Kernel>
-default_frame_field(const MeshDomain& domain,
-                                                                                const Lattice_request& r)
+default_frame_field(const MeshDomain& domain, const Lattice_request& r)
 {
-  const VVM::internal::Time_limit limit(r.options.maximum_running_time);
-  auto field = domain_cross_field(domain, edge_length_from_box(domain, 1., r), r.options.maximum_running_time);
-  if(r.maximum_scale_ratio > 1 && !limit.is_reached()) // a mesh needs no correction
-    field = Frame_fields::scale_corrected_frame_field(field, Frame_fields::parameters::maximum_size_ratio(r.maximum_scale_ratio)).field;
-  return field;
+  double size = edge_length_from_box(domain, 1., r);
+  if(!r.has_length) size *= std::cbrt(domain_volume_fraction(domain));
+  return domain_cross_field(domain, size, r.options.maximum_running_time, r.maximum_scale_ratio);
 }
 
 /// `r` with the time `limit` leaves as its time limit: what the stages after the field get

@@ -295,7 +295,8 @@ def tet_mesh(surface, method="gsm", vertices=None, size=None, features_angle=Non
 
 
 def hex_dominant(surface, particles=None, size=None, q_bound=0.5, boundary_distance=0.0, features_angle=None,
-                 field=None, threads=None, seed=0, progress=None, time_limit=None, sizing="uniform"):
+                 field=None, threads=None, seed=0, progress=None, time_limit=None, sizing="uniform",
+                 maximum_size_ratio=2.0):
     """A hex-dominant mesh of a closed surface: hexahedra, prisms, pyramids and tetrahedra.
 
     Particles form a cubic lattice aligned with ``field`` (default the boundary-aligned cross
@@ -306,6 +307,8 @@ def hex_dominant(surface, particles=None, size=None, q_bound=0.5, boundary_dista
     ``features_angle``, ``field``, ``sizing``, ``threads``, ``seed``, ``progress`` as in :func:`tet_mesh`.
     With ``sizing="thickness"`` the cubic lattice breaks into non-hex cells where its size changes:
     parts with walls of very different thicknesses get far fewer hexahedra.
+    ``maximum_size_ratio``: the cross field's scales are corrected so that the lattice's layers
+    follow its turning, within this ratio of each other (at least 1; 1: no correction).
     ``time_limit``: seconds (field, particles, merging), None for none: the tets not merged by
     then stay tetrahedra and ``mesh.info["time_limit_reached"]`` is true.
 
@@ -320,8 +323,8 @@ def hex_dominant(surface, particles=None, size=None, q_bound=0.5, boundary_dista
     source = _surface(surface)
     with _Field_file(field) as field_path:
         arrays = _vvm.hex_dominant(source, count, edge, float(q_bound), float(boundary_distance),
-                                   _angle(features_angle), field_path, str(sizing), _threads(threads), _seed(seed),
-                                   _time_limit(time_limit), _progress(progress))
+                                   _angle(features_angle), field_path, str(sizing), float(maximum_size_ratio),
+                                   _threads(threads), _seed(seed), _time_limit(time_limit), _progress(progress))
     return _to_meshio(arrays)
 
 

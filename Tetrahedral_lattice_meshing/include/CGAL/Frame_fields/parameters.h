@@ -44,7 +44,10 @@ CGAL_VVM_ADD_NAMED_PARAMETER(features_angle)
 /// `double`: the smoothing of a generated cross field stops after the first round that
 /// lowers its energy by less than this fraction (default 1e-4)
 CGAL_VVM_ADD_NAMED_PARAMETER(smoothing_tolerance)
+/// `double`: the largest ratio of a frame's two tangent lengths in a curvature field (default 3)
 CGAL_VVM_ADD_NAMED_PARAMETER(maximum_anisotropy)
+/// `double`: the largest ratio of two lengths over a field, for the functions that choose
+/// lengths (curvature fields, the scale correction; each documents its default)
 CGAL_VVM_ADD_NAMED_PARAMETER(maximum_size_ratio)
 
 } // namespace parameters

@@ -157,7 +157,7 @@ inline double integrability_error(const std::vector<Eigen::Vector3d>& xyz,
         mean += factor[k] * m.B[k].row(j).transpose() / 3;
       }
       const double curl = circulation(m, j, factor) / m.area; // the curl's component normal to the face
-      sum += w * curl * curl / std::pow(mean.squaredNorm(), 2);
+      sum += w * curl * curl / (mean.squaredNorm() * mean.squaredNorm());
       weight += w;
     }
   }
