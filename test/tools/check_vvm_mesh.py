@@ -249,9 +249,12 @@ def check_hexdom():
     for extension in (".msh", ".mesh"):
         run(["hexdom", data("cube.off"), "-o", work("cube" + extension), "--particles", "1000", "--quiet"])
         mesh = meshio.read(work("cube" + extension))
-        require(len(mesh.cells_dict.get("hexahedron", [])) == r["n_hex"], f"cube{extension}: hexahedra")
-        gmsh_resave(work("cube" + extension), {t: len(c) for t, c in mesh.cells_dict.items()
-                                               if t in ("tetra", "hexahedron", "wedge", "pyramid")})
+        for cell_type, key in (("hexahedron", "n_hex"), ("wedge", "n_prism"), ("pyramid", "n_pyramid"), ("tetra", "n_tets")):
+            require(len(mesh.cells_dict.get(cell_type, [])) == r[key], f"cube{extension}: {cell_type} count")
+        # Gmsh 4.8 (Debian 12) reads a MEDIT file's Tetrahedra and Hexahedra, and skips its Prisms
+        # and Pyramids (checked on a one-prism file): those are compared through meshio above
+        read_by_gmsh = ("tetra", "hexahedron") if extension == ".mesh" else ("tetra", "hexahedron", "wedge", "pyramid")
+        gmsh_resave(work("cube" + extension), {t: len(c) for t, c in mesh.cells_dict.items() if t in read_by_gmsh})
     mesh = meshio.read(work("cube.vtu"))
     require(len(mesh.cells_dict.get("hexahedron", [])) == r["n_hex"], "cube.vtu: hexahedra")
     require(r["time_limit_reached"] is False, f"report {r}")
