@@ -393,6 +393,27 @@ void test_discrete_fields()
     if(found < 0 || std::size_t(found) != nearest) ++grid_mismatches;
   }
   VVM_CHECK_EQUAL(grid_mismatches, std::size_t(0));
+
+  // points filling a ball, a tenth of their box (the grid is made finer there), plus the box's
+  // corners: queries in and around the ball, some on the points and on the grid cells' faces
+  std::vector<Eigen::Vector3d> ball{Eigen::Vector3d(-1, -1, -1), Eigen::Vector3d(1, 1, 1)};
+  while(ball.size() < 3000) {
+    const Eigen::Vector3d q(r.get_double(-1, 1), r.get_double(-1, 1), r.get_double(-1, 1));
+    if(q.norm() < 0.6) ball.push_back(q);
+  }
+  const FFI::Uniform_grid_3 ball_grid(ball, ball);
+  std::size_t ball_mismatches = 0;
+  for(int i = 0; i < 3000; ++i) {
+    Eigen::Vector3d q(r.get_double(-0.8, 0.8), r.get_double(-0.8, 0.8), r.get_double(-0.8, 0.8));
+    if(i % 4 == 0) q = ball[std::size_t(r.get_int(0, int(ball.size())))];
+    if(i % 4 == 1) q.x() = 0.05 * std::round(q.x() / 0.05); // on grid faces if the cells divide 0.05
+    std::size_t nearest = 0;
+    for(std::size_t k = 1; k < ball.size(); ++k)
+      if((ball[k] - q).squaredNorm() < (ball[nearest] - q).squaredNorm()) nearest = k;
+    const std::ptrdiff_t found = ball_grid.nearest(q, [&](std::size_t k) { return ball[k]; });
+    if(found < 0 || std::size_t(found) != nearest) ++ball_mismatches;
+  }
+  VVM_CHECK_EQUAL(ball_mismatches, std::size_t(0));
 }
 
 void test_text_format()

@@ -100,14 +100,12 @@ public:
   }
 
   /// the SH vector of the frame whose axes are the columns of the rotation `R`
+  /// the SH vector of the frame whose axes are the columns of the rotation `R`
+  /// (F_0(R^T p) = sum_i (r_i . p)^4 - 3/5: its 15 quartic coefficients times a
+  /// fixed matrix, a quarter of the work of sampling it)
   SH_vector frame(const Eigen::Matrix3d& R) const
   {
-    Eigen::Matrix<double, n_samples, 1> values;
-    for(int k = 0; k < n_samples; ++k) {
-      const Eigen::Vector3d p = R.transpose() * samples_.col(k);
-      values[k] = (p.array().square().square().sum() - 0.6) / reference_norm_; // not pow(4): a libm call per entry
-    }
-    return fit_ * values;
+    return monomials_to_frame_ * quartic_coefficients(R) + constant_to_frame_;
   }
 
   /// the reference frame (identity rotation)
@@ -163,6 +161,34 @@ public:
 private:
   static constexpr int n_samples = 32;
   static constexpr int n_candidates = 512;
+  typedef Eigen::Matrix<double, 15, 1> Quartic;
+
+  // x^a y^b z^c, a + b + c = 4, in the order of quartic_coefficients()
+  static Quartic quartic_monomials(const Eigen::Vector3d& p)
+  {
+    const double x = p.x(), y = p.y(), z = p.z();
+    const double x2 = x * x, y2 = y * y, z2 = z * z;
+    Quartic m;
+    m << x2 * x2, y2 * y2, z2 * z2, x2 * x * y, x2 * x * z, y2 * y * x, y2 * y * z, z2 * z * x, z2 * z * y,
+         x2 * y2, x2 * z2, y2 * z2, x2 * y * z, y2 * x * z, z2 * x * y;
+    return m;
+  }
+
+  // the coefficients of sum_i (r_i . p)^4 over the columns r_i of R (multinomial weights 1, 4, 6, 12)
+  static Quartic quartic_coefficients(const Eigen::Matrix3d& R)
+  {
+    Quartic q = Quartic::Zero();
+    for(int i = 0; i < 3; ++i) {
+      const double u = R(0, i), v = R(1, i), w = R(2, i);
+      const double u2 = u * u, v2 = v * v, w2 = w * w;
+      q[0] += u2 * u2, q[1] += v2 * v2, q[2] += w2 * w2;
+      q[3] += 4 * u2 * u * v, q[4] += 4 * u2 * u * w, q[5] += 4 * v2 * v * u;
+      q[6] += 4 * v2 * v * w, q[7] += 4 * w2 * w * u, q[8] += 4 * w2 * w * v;
+      q[9] += 6 * u2 * v2, q[10] += 6 * u2 * w2, q[11] += 6 * v2 * w2;
+      q[12] += 12 * u2 * v * w, q[13] += 12 * v2 * u * w, q[14] += 12 * w2 * u * v;
+    }
+    return q;
+  }
 
   L4_frames()
   {
@@ -179,8 +205,13 @@ private:
     Eigen::Matrix<double, n_samples, 1> values;
     for(int k = 0; k < n_samples; ++k) values[k] = samples_.col(k).array().square().square().sum() - 0.6;
     reference_ = fit_ * values;
-    reference_norm_ = reference_.norm();
-    reference_ /= reference_norm_;
+    const double reference_norm = reference_.norm();
+    reference_ /= reference_norm;
+    // frame(R) = fit_ (values of F_0(R^T s_k)) / |reference|, linear in R's quartic coefficients
+    Eigen::Matrix<double, n_samples, 15> monomials;
+    for(int k = 0; k < n_samples; ++k) monomials.row(k) = quartic_monomials(samples_.col(k)).transpose();
+    monomials_to_frame_ = fit_ * monomials / reference_norm;
+    constant_to_frame_ = -0.6 * fit_ * Eigen::Matrix<double, n_samples, 1>::Ones() / reference_norm;
     // d/dt Y(exp(t [a]x)^T s) = grad Y(s) . (s x a)
     for(int a = 0; a < 3; ++a) {
       Eigen::Matrix<double, n_samples, 9> dY;
@@ -204,7 +235,8 @@ private:
   Eigen::Matrix<double, 3, n_samples> samples_;
   Eigen::Matrix<double, 9, n_samples> fit_; // least-squares SH coefficients of sampled values
   SH_vector reference_;
-  double reference_norm_ = 1;
+  Eigen::Matrix<double, 9, 15> monomials_to_frame_;
+  SH_vector constant_to_frame_;
   std::array<SH_matrix, 3> L_;
   std::vector<Eigen::Matrix3d> candidate_rotations_;
   Eigen::Matrix<double, 9, n_candidates> candidate_frames_;

@@ -45,17 +45,16 @@ public:
     if(!(h > 0) || !std::isfinite(h)) h = extent.maxCoeff() / std::cbrt(double(lo.size()));
     if(!(h > 0) || !std::isfinite(h)) h = 1;
     // flat or needle-like sets: coarsen until the grid holds O(n) cells
-    for(;;) {
-      double cells = 1;
-      for(int a = 0; a < 3; ++a) {
-        const double n = std::ceil(extent[a] / h);
-        dims_[a] = n >= 1 ? int(std::min(n, 1e6)) : 1; // NaN (inf / inf): one layer
-        cells *= dims_[a];
-      }
-      if(cells <= 8. * double(lo.size()) + 64) break;
-      h *= 1.5;
+    const double most_cells = 8. * double(lo.size()) + 64;
+    while(set_dimensions(extent, h) > most_cells) h *= 1.5;
+    // points filling a small part of their box (a domain's vertices, say): finer, until an
+    // occupied grid cell holds about two of them, so that nearest() looks at few points
+    const bool points = std::equal(lo.begin(), lo.end(), hi.begin());
+    const double per_cell = points ? double(lo.size()) / double(occupied_cells(lo)) : 0.;
+    if(per_cell > 2) {
+      const double finer = h / std::cbrt(per_cell / 2);
+      if(set_dimensions(extent, finer) > most_cells) set_dimensions(extent, h);
     }
-    cell_size_ = extent.cwiseQuotient(Eigen::Vector3d(dims_[0], dims_[1], dims_[2]));
     // counting sort of the (element, grid cell) pairs into CSR arrays
     offsets_.assign(std::size_t(dims_[0]) * dims_[1] * dims_[2] + 1, 0);
     for(int pass = 0; pass < 2; ++pass) {
@@ -112,7 +111,18 @@ public:
     const std::array<int, 3> c = index_of(p);
     std::ptrdiff_t best = -1;
     double best_d2 = std::numeric_limits<double>::infinity();
-    auto visit = [&](int x, int y, int z) {
+    // the squared distance from p to the slab of grid cells with index i along axis a; a
+    // little less, so that rounding in index_of() never makes it exceed a listed point's
+    auto gap2 = [&](int a, int i) {
+      const double below = origin_[a] + i * cell_size_[a] - p[a], above = p[a] - (origin_[a] + (i + 1) * cell_size_[a]);
+      const double g = (std::max)(0., (std::max)(below, above) - 1e-9 * cell_size_[a]);
+      return g * g;
+    };
+    // a grid cell (or a row, a slab of them) farther than the best point so far cannot hold
+    // a nearer point, nor a tie with a smaller index
+    auto farther = [&](double g2) { return best >= 0 && g2 > best_d2; };
+    auto visit = [&](int x, int y, int z, double g2) {
+      if(farther(g2)) return;
       const std::size_t g = linear({x, y, z});
       for(std::size_t k = offsets_[g]; k < offsets_[g + 1]; ++k) {
         const std::size_t i = items_[k];
@@ -130,15 +140,20 @@ public:
         hi[a] = std::min(dims_[a] - 1, c[a] + r);
       }
       // the shell at Chebyshev distance r only
-      for(int x = lo[0]; x <= hi[0]; ++x)
+      for(int x = lo[0]; x <= hi[0]; ++x) {
+        const double gx = gap2(0, x);
+        if(farther(gx)) continue;
         for(int y = lo[1]; y <= hi[1]; ++y) {
+          const double gxy = gx + gap2(1, y);
+          if(farther(gxy)) continue;
           if(std::abs(x - c[0]) == r || std::abs(y - c[1]) == r) {
-            for(int z = lo[2]; z <= hi[2]; ++z) visit(x, y, z);
+            for(int z = lo[2]; z <= hi[2]; ++z) visit(x, y, z, gxy + gap2(2, z));
           } else {
-            if(c[2] - r >= 0) visit(x, y, c[2] - r);
-            if(r > 0 && c[2] + r < dims_[2]) visit(x, y, c[2] + r);
+            if(c[2] - r >= 0) visit(x, y, c[2] - r, gxy + gap2(2, c[2] - r));
+            if(r > 0 && c[2] + r < dims_[2]) visit(x, y, c[2] + r, gxy + gap2(2, c[2] + r));
           }
         }
+      }
       // every unvisited grid cell lies in the grid box beyond a face of the visited box
       // (the bound may overflow to infinity far from the grid: then all cells are visited)
       double bound2 = std::numeric_limits<double>::infinity();
@@ -161,6 +176,32 @@ public:
   }
 
 private:
+  // dims_ and cell_size_ for grid cells of about size h over `extent`; returns their number
+  double set_dimensions(const Eigen::Vector3d& extent, double h)
+  {
+    double cells = 1;
+    for(int a = 0; a < 3; ++a) {
+      const double n = std::ceil(extent[a] / h);
+      dims_[a] = n >= 1 ? int(std::min(n, 1e6)) : 1; // NaN (inf / inf): one layer
+      cells *= dims_[a];
+    }
+    cell_size_ = extent.cwiseQuotient(Eigen::Vector3d(dims_[0], dims_[1], dims_[2]));
+    return cells;
+  }
+
+  // the number of grid cells holding at least one of the points
+  std::size_t occupied_cells(const std::vector<Eigen::Vector3d>& points) const
+  {
+    std::vector<bool> met(std::size_t(dims_[0]) * dims_[1] * dims_[2], false);
+    std::size_t count = 0;
+    for(const Eigen::Vector3d& p : points) {
+      const std::size_t c = linear(index_of(p));
+      if(!met[c]) ++count;
+      met[c] = true;
+    }
+    return (std::max)(count, std::size_t(1));
+  }
+
   std::size_t linear(const std::array<int, 3>& i) const
   {
     return (std::size_t(i[0]) * dims_[1] + i[1]) * dims_[2] + i[2];

@@ -44,17 +44,26 @@ std::size_t delete_particles(System& s)
   const std::vector<double> stretch = s.stretches();
   const double r = s.euclidean_radius(stretch);
   const Neighbor_grid grid(s.points, r);
-  // the sorted neighbour distances of each particle within R (the rules look no farther), in parallel
-  std::vector<std::vector<std::pair<double, std::size_t>>> near(n);
+  // the distance of each pair i < j within R (the rules look no farther), in parallel: one
+  // field lookup per pair, at its midpoint
+  std::vector<std::vector<std::pair<double, std::size_t>>> above(n);
   parallel_for_each_index(n, [&](std::size_t i) {
-    if(s.kinds[i] == Particle_kind::CORNER) return;
     grid.for_each_within(s.points[i], r, [&](std::size_t j, double d2) {
-      if(j == i || !s.may_be_within(d2, stretch[i], stretch[j], s.neighbor_radius())) return;
+      if(j <= i || (s.kinds[i] == Particle_kind::CORNER && s.kinds[j] == Particle_kind::CORNER) ||
+         !s.may_be_within(d2, stretch[i], stretch[j], s.neighbor_radius()))
+        return;
       const Eigen::Vector3d v = s.points[i] - s.points[j];
-      near[i].emplace_back((s.B(s.points[i] - 0.5 * v) * v).norm() / l, j);
+      above[i].emplace_back((s.B(0.5 * (s.points[i] + s.points[j])) * v).norm() / l, j);
     });
-    std::sort(near[i].begin(), near[i].end());
   });
+  // the sorted neighbour distances of each particle
+  std::vector<std::vector<std::pair<double, std::size_t>>> near(n);
+  for(std::size_t i = 0; i < n; ++i)
+    for(const auto& x : above[i]) {
+      near[i].push_back(x);
+      near[x.second].emplace_back(x.first, i);
+    }
+  parallel_for_each_index(n, [&](std::size_t i) { std::sort(near[i].begin(), near[i].end()); });
   std::vector<std::size_t> order;
   for(Particle_kind k : {Particle_kind::FREE, Particle_kind::BOUNDARY, Particle_kind::SHARP_EDGE})
     for(std::size_t i = 0; i < n; ++i)
