@@ -376,44 +376,42 @@ void test_discrete_fields()
   }
   VVM_CHECK_EQUAL(far_mismatches, std::size_t(0));
 
-  // the grid alone, on points whose grid corners are empty: a far query lands (clamped)
-  // in an empty corner cell and must still find the nearest point
+  // the grid alone: the queries whose nearest point (smallest index on ties) it does not find
+  auto grid_mismatches = [](const std::vector<Eigen::Vector3d>& points, const std::vector<Eigen::Vector3d>& queries) {
+    const FFI::Uniform_grid_3 grid(points, points);
+    std::size_t mismatches = 0;
+    for(const Eigen::Vector3d& q : queries) {
+      std::size_t nearest = 0;
+      for(std::size_t i = 1; i < points.size(); ++i)
+        if((points[i] - q).squaredNorm() < (points[nearest] - q).squaredNorm()) nearest = i;
+      const std::ptrdiff_t found = grid.nearest(q, [&](std::size_t i) { return points[i]; });
+      if(found < 0 || std::size_t(found) != nearest) ++mismatches;
+    }
+    return mismatches;
+  };
+  // on points whose grid corners are empty: a far query lands (clamped) in an empty corner
+  // cell and must still find the nearest point
   std::vector<Eigen::Vector3d> ring;
   for(int i = 0; i < 64; ++i)
     ring.emplace_back(std::cos(2 * pi * i / 64), std::sin(2 * pi * i / 64), 0.01 * (i % 3));
-  const FFI::Uniform_grid_3 grid(ring, ring);
-  std::size_t grid_mismatches = 0;
-  for(const Eigen::Vector3d& q : {Eigen::Vector3d(1e200, 1e200, 0), Eigen::Vector3d(-1e300, -1e300, -1e300),
-                                  Eigen::Vector3d(5, 5, 5), Eigen::Vector3d(1e154, -1e154, 0),
-                                  Eigen::Vector3d(0.99, 0.99, 0.02), Eigen::Vector3d(-3, 2, -1e6)}) {
-    std::size_t nearest = 0;
-    for(std::size_t i = 1; i < ring.size(); ++i)
-      if((ring[i] - q).squaredNorm() < (ring[nearest] - q).squaredNorm()) nearest = i;
-    const std::ptrdiff_t found = grid.nearest(q, [&](std::size_t i) { return ring[i]; });
-    if(found < 0 || std::size_t(found) != nearest) ++grid_mismatches;
-  }
-  VVM_CHECK_EQUAL(grid_mismatches, std::size_t(0));
-
+  VVM_CHECK_EQUAL(grid_mismatches(ring, {Eigen::Vector3d(1e200, 1e200, 0), Eigen::Vector3d(-1e300, -1e300, -1e300),
+                                         Eigen::Vector3d(5, 5, 5), Eigen::Vector3d(1e154, -1e154, 0),
+                                         Eigen::Vector3d(0.99, 0.99, 0.02), Eigen::Vector3d(-3, 2, -1e6)}),
+                  std::size_t(0));
   // points filling a ball, a tenth of their box (the grid is made finer there), plus the box's
   // corners: queries in and around the ball, some on the points and on the grid cells' faces
-  std::vector<Eigen::Vector3d> ball{Eigen::Vector3d(-1, -1, -1), Eigen::Vector3d(1, 1, 1)};
+  std::vector<Eigen::Vector3d> ball{Eigen::Vector3d(-1, -1, -1), Eigen::Vector3d(1, 1, 1)}, queries;
   while(ball.size() < 3000) {
     const Eigen::Vector3d q(r.get_double(-1, 1), r.get_double(-1, 1), r.get_double(-1, 1));
     if(q.norm() < 0.6) ball.push_back(q);
   }
-  const FFI::Uniform_grid_3 ball_grid(ball, ball);
-  std::size_t ball_mismatches = 0;
   for(int i = 0; i < 3000; ++i) {
     Eigen::Vector3d q(r.get_double(-0.8, 0.8), r.get_double(-0.8, 0.8), r.get_double(-0.8, 0.8));
     if(i % 4 == 0) q = ball[std::size_t(r.get_int(0, int(ball.size())))];
     if(i % 4 == 1) q.x() = 0.05 * std::round(q.x() / 0.05); // on grid faces if the cells divide 0.05
-    std::size_t nearest = 0;
-    for(std::size_t k = 1; k < ball.size(); ++k)
-      if((ball[k] - q).squaredNorm() < (ball[nearest] - q).squaredNorm()) nearest = k;
-    const std::ptrdiff_t found = ball_grid.nearest(q, [&](std::size_t k) { return ball[k]; });
-    if(found < 0 || std::size_t(found) != nearest) ++ball_mismatches;
+    queries.push_back(q);
   }
-  VVM_CHECK_EQUAL(ball_mismatches, std::size_t(0));
+  VVM_CHECK_EQUAL(grid_mismatches(ball, queries), std::size_t(0));
 }
 
 void test_text_format()
