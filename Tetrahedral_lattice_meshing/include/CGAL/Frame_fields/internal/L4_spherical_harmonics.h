@@ -100,7 +100,6 @@ public:
   }
 
   /// the SH vector of the frame whose axes are the columns of the rotation `R`
-  /// the SH vector of the frame whose axes are the columns of the rotation `R`
   /// (F_0(R^T p) = sum_i (r_i . p)^4 - 3/5: its 15 quartic coefficients times a
   /// fixed matrix, a quarter of the work of sampling it)
   SH_vector frame(const Eigen::Matrix3d& R) const
