@@ -364,6 +364,14 @@ private:
     return q >= prune_factor * bound_;
   }
 
+  // the corner a of a hexahedron with edges to b, c, d (right-handed) not inverted, as
+  // collect_cell's test of the same corner computes it
+  bool is_positive_corner(std::size_t a, std::size_t b, std::size_t c, std::size_t d) const
+  {
+    const Eigen::Vector3d& p = mesh_.points[a];
+    return corner_scaled_jacobian(mesh_.points[b] - p, mesh_.points[c] - p, mesh_.points[d] - p) > 0;
+  }
+
   static double corner_orthogonality_unsigned(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& d)
   {
     // either handedness: the guesses of the first loop are right-handed only after the check
@@ -384,15 +392,25 @@ private:
       intersect(N[i], N[k], v, pik);
       intersect(N[j], N[k], v, pjk);
       if(!corner_may_pass(t, l, i, j, k)) continue;
+      // try_cell keeps these labels (it mirrors a guess whose corner l is inverted), so that
+      // collect_cell will ask every corner to be positive: the inverted ones end a guess early
+      const bool kept = !(orientation(mesh_, l, i, j, k) < 0);
+      auto positive = [&](std::size_t a, std::size_t b, std::size_t c, std::size_t d) {
+        return !kept || is_positive_corner(a, b, c, d);
+      };
       for(std::size_t p : pij)
         for(std::size_t q : pik) {
-          if(q == p || !corner_may_pass(t, i, p, l, q)) continue;
+          if(q == p || !corner_may_pass(t, i, p, l, q) || !positive(i, p, l, q)) continue;
           intersect(N[p], N[q], v, pq);
           if(pq.empty()) continue;
           for(std::size_t r : pjk) {
-            if(r == p || r == q || !corner_may_pass(t, j, l, p, r) || !corner_may_pass(t, k, q, l, r)) continue;
+            if(r == p || r == q || !corner_may_pass(t, j, l, p, r) || !corner_may_pass(t, k, q, l, r) ||
+               !positive(j, l, p, r) || !positive(k, r, q, l))
+              continue;
             intersect(pq, N[r], std::array<std::size_t, 3>{{p, q, r}}, s);
-            for(std::size_t x : s) try_cell(Hex_dominant_cell_type::HEXAHEDRON, {{l, i, p, j, k, q, x, r}}, t, 7, out);
+            for(std::size_t x : s)
+              if(positive(p, j, i, x) && positive(q, k, x, i) && positive(x, q, r, p) && positive(r, x, k, j))
+                try_cell(Hex_dominant_cell_type::HEXAHEDRON, {{l, i, p, j, k, q, x, r}}, t, 7, out);
           }
         }
     }

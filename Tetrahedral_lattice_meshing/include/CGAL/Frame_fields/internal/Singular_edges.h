@@ -9,13 +9,13 @@
 #ifndef CGAL_FRAME_FIELDS_INTERNAL_SINGULAR_EDGES_H
 #define CGAL_FRAME_FIELDS_INTERNAL_SINGULAR_EDGES_H
 
+#include <CGAL/VVM/internal/Parallel_for.h>
+
 #include <Eigen/Core>
 
 #include <algorithm>
 #include <array>
 #include <cstddef>
-#include <map>
-#include <set>
 #include <vector>
 
 namespace CGAL {
@@ -61,59 +61,90 @@ struct Singular_edge_report
 
 /// `cells`, their frames (rotations), and the facets that are walls (the
 /// boundary): an edge is interior if the ring of cells around it closes
-/// without crossing a wall.
+/// without crossing a wall. The edges are reported in the order of their first
+/// cell, then of their place in it; each ring is walked on its own, in parallel.
 inline Singular_edge_report
 singular_edges(const std::vector<std::array<std::size_t, 4>>& cells,
                const std::vector<Eigen::Matrix3d>& cell_frames,
                const std::vector<std::array<std::size_t, 3>>& walls)
 {
   typedef std::array<std::size_t, 3> Face;
+  typedef std::array<std::size_t, 2> Edge;
+  constexpr std::size_t none = std::size_t(-1);
   auto sorted = [](Face f) { std::sort(f.begin(), f.end()); return f; };
-  std::map<Face, std::array<std::ptrdiff_t, 2>> cells_of_face;
+  auto facet = [&](std::size_t c, int k) { // the facet opposite vertex k
+    Face f;
+    for(int i = 0, j = 0; i < 4; ++i)
+      if(i != k) f[std::size_t(j++)] = cells[c][std::size_t(i)];
+    return sorted(f);
+  };
+  // the cell across each facet (none on the border of the cell set or across a wall)
+  std::vector<std::pair<Face, std::size_t>> facets; // (facet, 4 c + k)
+  facets.reserve(4 * cells.size());
   for(std::size_t c = 0; c < cells.size(); ++c)
-    for(int i = 0; i < 4; ++i) {
-      Face f;
-      for(int k = 0, j = 0; k < 4; ++k)
-        if(k != i) f[std::size_t(j++)] = cells[c][std::size_t(k)];
-      auto it = cells_of_face.emplace(sorted(f), std::array<std::ptrdiff_t, 2>{{-1, -1}}).first;
-      (it->second[0] < 0 ? it->second[0] : it->second[1]) = std::ptrdiff_t(c);
+    for(int k = 0; k < 4; ++k) facets.emplace_back(facet(c, k), 4 * c + std::size_t(k));
+  std::sort(facets.begin(), facets.end());
+  std::vector<Face> wall_keys;
+  for(const Face& w : walls) wall_keys.push_back(sorted(w));
+  std::sort(wall_keys.begin(), wall_keys.end());
+  std::vector<std::size_t> across(4 * cells.size(), none);
+  for(std::size_t i = 0; i + 1 < facets.size(); ++i)
+    if(facets[i].first == facets[i + 1].first &&
+       !std::binary_search(wall_keys.begin(), wall_keys.end(), facets[i].first)) {
+      across[facets[i].second] = facets[i + 1].second / 4;
+      across[facets[i + 1].second] = facets[i].second / 4;
     }
-  std::set<Face> wall_set;
-  for(const Face& w : walls) wall_set.insert(sorted(w));
 
-  Singular_edge_report report;
-  std::set<std::array<std::size_t, 2>> seen;
-  for(std::size_t c0 = 0; c0 < cells.size(); ++c0)
-    for(int i = 0; i < 4; ++i)
-      for(int j = i + 1; j < 4; ++j) {
-        const std::size_t a = cells[c0][std::size_t(i)], b = cells[c0][std::size_t(j)];
-        const std::array<std::size_t, 2> edge{{(std::min)(a, b), (std::max)(a, b)}};
-        if(!seen.insert(edge).second) continue;
-        // the two other vertices of c0: walk across the face (a, b, next)
-        std::size_t other[2], n = 0;
-        for(int k = 0; k < 4; ++k)
-          if(k != i && k != j) other[n++] = cells[c0][std::size_t(k)];
-        std::size_t cell = c0, next = other[1];
-        Eigen::Matrix3d holonomy = Eigen::Matrix3d::Identity();
-        bool closed = false;
-        for(std::size_t steps = 0; steps <= cells.size(); ++steps) {
-          const Face f = sorted({{a, b, next}});
-          if(wall_set.count(f)) break;
-          const std::array<std::ptrdiff_t, 2>& pair = cells_of_face[f];
-          const std::ptrdiff_t to = pair[0] == std::ptrdiff_t(cell) ? pair[1] : pair[0];
-          if(to < 0) break; // the edge is on the border of the cell set
-          holonomy = holonomy * matching(cell_frames[cell], cell_frames[std::size_t(to)]);
-          if(std::size_t(to) == c0) { closed = true; break; }
-          std::size_t fourth = 0;
-          for(std::size_t v : cells[std::size_t(to)])
-            if(v != a && v != b && v != next) fourth = v;
-          next = fourth;
-          cell = std::size_t(to);
-        }
-        if(!closed) continue;
-        ++report.number_of_interior_edges;
-        if(!holonomy.isIdentity(0.5)) report.singular_edges.push_back(edge);
+  // each edge once, with its first cell and place in it (6 c + pair)
+  static const int pairs[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
+  std::vector<std::pair<Edge, std::size_t>> edges;
+  edges.reserve(6 * cells.size());
+  for(std::size_t c = 0; c < cells.size(); ++c)
+    for(std::size_t p = 0; p < 6; ++p) {
+      const std::size_t a = cells[c][std::size_t(pairs[p][0])], b = cells[c][std::size_t(pairs[p][1])];
+      edges.emplace_back(Edge{{(std::min)(a, b), (std::max)(a, b)}}, 6 * c + p);
+    }
+  std::sort(edges.begin(), edges.end());
+  edges.erase(std::unique(edges.begin(), edges.end(), [](const auto& x, const auto& y) { return x.first == y.first; }),
+              edges.end());
+  std::sort(edges.begin(), edges.end(), [](const auto& x, const auto& y) { return x.second < y.second; });
+
+  // 0: the ring does not close, 1: it closes with the identity, 2: singular
+  std::vector<char> kind(edges.size(), 0);
+  CGAL::VVM::internal::parallel_for_each_index(edges.size(), [&](std::size_t e) {
+    const std::size_t c0 = edges[e].second / 6, p = edges[e].second % 6;
+    const std::size_t a = cells[c0][std::size_t(pairs[p][0])], b = cells[c0][std::size_t(pairs[p][1])];
+    // walk across the facet (a, b, next), next the later of c0's two other vertices
+    std::size_t next = none;
+    for(int k = 3; k >= 0 && next == none; --k)
+      if(k != pairs[p][0] && k != pairs[p][1]) next = cells[c0][std::size_t(k)];
+    std::size_t cell = c0;
+    Eigen::Matrix3d holonomy = Eigen::Matrix3d::Identity();
+    for(std::size_t steps = 0; steps <= cells.size(); ++steps) {
+      int opposite = 0; // the vertex of `cell` not on the facet
+      for(int k = 0; k < 4; ++k) {
+        const std::size_t v = cells[cell][std::size_t(k)];
+        if(v != a && v != b && v != next) opposite = k;
       }
+      const std::size_t to = across[4 * cell + std::size_t(opposite)];
+      if(to == none) return;
+      holonomy = holonomy * matching(cell_frames[cell], cell_frames[to]);
+      if(to == c0) {
+        kind[e] = holonomy.isIdentity(0.5) ? 1 : 2;
+        return;
+      }
+      std::size_t fourth = 0;
+      for(std::size_t v : cells[to])
+        if(v != a && v != b && v != next) fourth = v;
+      next = fourth;
+      cell = to;
+    }
+  });
+  Singular_edge_report report;
+  for(std::size_t e = 0; e < edges.size(); ++e) {
+    if(kind[e] != 0) ++report.number_of_interior_edges;
+    if(kind[e] == 2) report.singular_edges.push_back(edges[e].first);
+  }
   return report;
 }
 

@@ -90,20 +90,45 @@ private:
     return flips;
   }
 
+  // a facet to look at: a cell and index, and its vertices to find it again once flips
+  // have freed or reused the cell
+  struct Pending_facet
+  {
+    Cell_handle cell;
+    int index;
+    std::array<Vertex_handle, 3> vertices;
+  };
+
+  Pending_facet pending(const Facet& f) const { return {f.first, f.second, facet_vertices(f)}; }
+
+  // the facet now, if it is still one: through its cell while the cell holds it, else
+  // searched around its vertices
+  bool current(const Pending_facet& t, Facet& f) const
+  {
+    if(this->tr_.tds().cells().is_used(t.cell) && facet_vertices(Facet(t.cell, t.index)) == t.vertices) {
+      f = Facet(t.cell, t.index);
+      return true;
+    }
+    Cell_handle c;
+    int i, j, k;
+    if(!this->tr_.is_facet(t.vertices[0], t.vertices[1], t.vertices[2], c, i, j, k)) return false;
+    f = Facet(c, 6 - i - j - k);
+    return true;
+  }
+
   std::size_t pass(std::size_t max_flips, bool ties)
   {
-    std::vector<std::array<Vertex_handle, 3>> stack;
+    std::vector<Pending_facet> stack;
     for(auto c = this->c3t3_.cells_in_complex_begin(); c != this->c3t3_.cells_in_complex_end(); ++c)
       for(int i = 0; i < 4; ++i)
-        if(Cell_handle(c) < c->neighbor(i)) stack.push_back(facet_vertices(Facet(c, i)));
+        if(Cell_handle(c) < c->neighbor(i)) stack.push_back(pending(Facet(c, i)));
     std::size_t flips = 0;
     while(!stack.empty() && flips < max_flips) {
-      const std::array<Vertex_handle, 3> t = stack.back();
+      Facet f;
+      const bool found = current(stack.back(), f);
       stack.pop_back();
-      Cell_handle c;
-      int i, j, k;
-      if(!this->tr_.is_facet(t[0], t[1], t[2], c, i, j, k)) continue;
-      const Facet f(c, 6 - i - j - k);
+      if(!found) continue;
+      const Cell_handle c = f.first;
       Subdomain_index s;
       if(!this->same_subdomain({c, c->neighbor(f.second)}, s) || this->c3t3_.is_in_complex(f)) continue;
       const Eigen::Matrix3d B = B_(five_point_centroid(f));
@@ -113,7 +138,7 @@ private:
       if(!flip_2_3(f, s, B, test, created) && !flip_3_2(f, B, test, created)) continue;
       ++flips;
       for(const Cell_handle& n : created)
-        for(int m = 0; m < 4; ++m) stack.push_back(facet_vertices(Facet(n, m)));
+        for(int m = 0; m < 4; ++m) stack.push_back(pending(Facet(n, m)));
     }
     return flips;
   }

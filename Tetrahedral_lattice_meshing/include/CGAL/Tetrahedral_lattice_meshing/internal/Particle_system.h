@@ -416,9 +416,16 @@ public:
     parallel_for_each_index(n, [&](std::size_t i) {
       if(kinds[i] == Particle_kind::CORNER) return;
       if(kinds[i] == Particle_kind::SHARP_EDGE) return to_edge(i);
+      Eigen::Matrix3d b;
+      if(kinds[i] == Particle_kind::FREE) {
+        // still inside and farther from the surface than clearance - moved, which B shrinks by
+        // at most 1 / |B^-1|_F: farther than snap in the imagined space, nothing to do
+        b = B(points[i]);
+        if(moved[i] < clearance[i] && clearance[i] - moved[i] > snap * l_ * b.inverse().norm()) return;
+      }
       const auto c = boundary_->closest_on_surface(points[i]);
       if(kinds[i] == Particle_kind::FREE) {
-        if((B(points[i]) * (c.point - points[i])).norm() > snap * l_) {
+        if((b * (c.point - points[i])).norm() > snap * l_) {
           if(moved[i] >= clearance[i]) check_inside[i] = 1; // may have crossed the boundary
           else return;
         }
