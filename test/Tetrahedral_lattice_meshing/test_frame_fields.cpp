@@ -384,7 +384,7 @@ void test_discrete_fields()
       std::size_t nearest = 0;
       for(std::size_t i = 1; i < points.size(); ++i)
         if((points[i] - q).squaredNorm() < (points[nearest] - q).squaredNorm()) nearest = i;
-      const std::ptrdiff_t found = grid.nearest(q, [&](std::size_t i) { return points[i]; });
+      const std::ptrdiff_t found = grid.nearest(q);
       if(found < 0 || std::size_t(found) != nearest) ++mismatches;
     }
     return mismatches;

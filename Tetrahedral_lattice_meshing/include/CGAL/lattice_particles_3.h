@@ -229,6 +229,7 @@ Particles_in_domain<MeshDomain> lattice_particles(const MeshDomain& domain, cons
   out.boundary = std::make_unique<Domain_boundary<MeshDomain, K>>(domain, spacing, finest);
   const Domain_measures measures = domain_measures<Domain_boundary<MeshDomain, K>, FrameField, Point_3>(*out.boundary, field);
   if(!(measures.volume > 0)) fail("the domain is empty (no volume)");
+  if(r.options.verbose) std::cerr << "  lattice: the boundary sampled and the domain measured, " << timer.time() << " s\n";
   const double l = r.has_length ? r.edge_length : lattice_edge_length(r.lattice, measures, r.number_of_particles);
   if(!(l < std::numeric_limits<double>::infinity())) fail("too few particles for the domain's corners");
   const double n = lattice_particle_count(r.lattice, measures, l);

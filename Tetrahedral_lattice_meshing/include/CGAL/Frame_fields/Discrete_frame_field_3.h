@@ -131,14 +131,13 @@ public:
     }
     std::ptrdiff_t found = -1;
     if(location_ == Frame_location::VERTICES) {
-      found = vertex_grid_.nearest(x, [this](std::size_t i) { return xyz_[i]; });
+      found = vertex_grid_.nearest(x);
     } else {
       std::size_t inside = cells_.size();
       cell_grid_.for_each_in_cell(x, [&](std::size_t c) {
         if(c < inside && contains(c, x)) inside = c;
       });
-      found = inside < cells_.size() ? std::ptrdiff_t(inside)
-                                     : centroid_grid_.nearest(x, [this](std::size_t c) { return centroids_[c]; });
+      found = inside < cells_.size() ? std::ptrdiff_t(inside) : centroid_grid_.nearest(x);
     }
     CGAL_assertion(found >= 0 && std::size_t(found) < T_.size());
     return std::size_t(found);

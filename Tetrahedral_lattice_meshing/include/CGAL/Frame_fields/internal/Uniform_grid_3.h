@@ -75,6 +75,11 @@ public:
             }
       }
     }
+    // a point grid keeps its points in grid order: nearest() reads them one after another
+    if(points) {
+      item_points_.resize(items_.size());
+      for(std::size_t k = 0; k < items_.size(); ++k) item_points_[k] = lo[items_[k]];
+    }
   }
 
   bool empty() const { return items_.empty(); }
@@ -99,15 +104,14 @@ public:
   }
 
   /// the index minimizing (squared distance(p, point(i)), i) over the points this grid
-  /// was built on (boxes lo = hi); -1 if there are none. Visits shells of grid cells
+  /// was built on (boxes lo = hi); -1 if there are none or the grid holds boxes. Visits shells of grid cells
   /// around p's cell until no unvisited cell can hold a nearer point. `p` must be
   /// finite; far from the grid, where squared distances overflow to infinity, every
   /// point ties and the smallest index wins.
-  template <class PointOf>
-  std::ptrdiff_t nearest(const Eigen::Vector3d& p, PointOf point_of) const
+  std::ptrdiff_t nearest(const Eigen::Vector3d& p) const
   {
     CGAL_precondition(p.allFinite());
-    if(items_.empty()) return -1;
+    if(item_points_.empty()) return -1;
     const std::array<int, 3> c = index_of(p);
     std::ptrdiff_t best = -1;
     double best_d2 = std::numeric_limits<double>::infinity();
@@ -126,7 +130,7 @@ public:
       const std::size_t g = linear({x, y, z});
       for(std::size_t k = offsets_[g]; k < offsets_[g + 1]; ++k) {
         const std::size_t i = items_[k];
-        const double d2 = (point_of(i) - p).squaredNorm();
+        const double d2 = (item_points_[k] - p).squaredNorm();
         if(best < 0 || d2 < best_d2 || (d2 == best_d2 && std::ptrdiff_t(i) < best)) {
           best_d2 = d2;
           best = std::ptrdiff_t(i);
@@ -211,6 +215,7 @@ private:
   std::array<int, 3> dims_{{1, 1, 1}};
   std::vector<std::size_t> offsets_{0, 0};
   std::vector<std::size_t> items_;
+  std::vector<Eigen::Vector3d> item_points_; // a point grid's points, as items_ lists them
 };
 
 } // namespace internal
