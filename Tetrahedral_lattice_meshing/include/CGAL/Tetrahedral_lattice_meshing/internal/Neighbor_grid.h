@@ -27,8 +27,8 @@ class Neighbor_grid
 public:
   Neighbor_grid() = default;
 
-  /// `points` must outlive the grid; `radius` is the largest query radius
-  Neighbor_grid(const std::vector<Eigen::Vector3d>& points, double radius) : points_(&points)
+  /// the grid of `points` (copied); `radius` is the largest query radius
+  Neighbor_grid(const std::vector<Eigen::Vector3d>& points, double radius)
   {
     if(points.empty()) return;
     lo_ = points[0];
@@ -59,6 +59,8 @@ public:
     order_.resize(points.size());
     std::vector<std::size_t> fill(start_.begin(), start_.end() - 1);
     for(std::size_t i = 0; i < points.size(); ++i) order_[fill[std::size_t(keys[i])]++] = i;
+    sorted_points_.resize(points.size());
+    for(std::size_t s = 0; s < order_.size(); ++s) sorted_points_[s] = points[order_[s]];
   }
 
   bool empty() const { return order_.empty(); }
@@ -91,7 +93,7 @@ public:
           const std::size_t k = std::size_t(key({x, y, z}));
           for(std::size_t s = start_[k]; s < start_[k + 1]; ++s) {
             const std::size_t j = order_[s];
-            const double d2 = ((*points_)[j] - p).squaredNorm();
+            const double d2 = (sorted_points_[s] - p).squaredNorm();
             if(d2 <= r2 && found(j, d2)) return true;
           }
         }
@@ -113,11 +115,11 @@ private:
   }
   std::int64_t key(const std::array<std::int64_t, 3>& c) const { return (c[0] * dims_[1] + c[1]) * dims_[2] + c[2]; }
 
-  const std::vector<Eigen::Vector3d>* points_ = nullptr;
   Eigen::Vector3d lo_ = Eigen::Vector3d::Zero();
   double h_ = 1;
   std::array<std::int64_t, 3> dims_{{1, 1, 1}};
   std::vector<std::size_t> order_, start_;
+  std::vector<Eigen::Vector3d> sorted_points_; // the points in the order of order_: a query reads them in sequence
 };
 
 } // namespace internal

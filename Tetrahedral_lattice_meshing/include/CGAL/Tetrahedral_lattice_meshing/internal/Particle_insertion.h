@@ -46,15 +46,15 @@ std::vector<Insertion_candidate> empty_sites(const System& s, double min_distanc
 {
   const std::size_t n = s.size();
   const double l = s.edge_length();
-  // the particles that may be too near, nearest first: an occupied site's occupant is
-  // usually the first, so that few of them cost a field lookup
+  // the particles that may be too near, the nearest first: an occupied site's occupant is
+  // usually that one, so that few of them cost a field lookup
   auto far_enough = [&](const Eigen::Vector3d& c, double stretch_c) {
     thread_local std::vector<std::pair<double, std::size_t>> near;
     near.clear();
     grid.for_each_within(c, euclidean_radius, [&](std::size_t j, double d2) {
       if(s.may_be_within(d2, stretch_c, stretch[j], min_distance)) near.emplace_back(d2, j);
     });
-    std::sort(near.begin(), near.end());
+    if(!near.empty()) std::iter_swap(near.begin(), std::min_element(near.begin(), near.end()));
     for(const auto& x : near) {
       const std::size_t j = x.second;
       if((s.B(0.5 * (c + s.points[j])) * (c - s.points[j])).norm() <= min_distance * l) return false;
