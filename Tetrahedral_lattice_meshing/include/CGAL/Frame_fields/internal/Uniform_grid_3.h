@@ -104,10 +104,10 @@ public:
   }
 
   /// the index minimizing (squared distance(p, point(i)), i) over the points this grid
-  /// was built on (boxes lo = hi); -1 if there are none or the grid holds boxes. Visits shells of grid cells
-  /// around p's cell until no unvisited cell can hold a nearer point. `p` must be
-  /// finite; far from the grid, where squared distances overflow to infinity, every
-  /// point ties and the smallest index wins.
+  /// was built on (boxes lo = hi); -1 if there are none or the grid holds boxes. Visits
+  /// shells of grid cells around p's cell until no unvisited cell can hold a nearer point.
+  /// `p` must be finite; far from the grid, where squared distances overflow to infinity,
+  /// every point ties and the smallest index wins.
   std::ptrdiff_t nearest(const Eigen::Vector3d& p) const
   {
     CGAL_precondition(p.allFinite());
