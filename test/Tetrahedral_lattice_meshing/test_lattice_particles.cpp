@@ -8,7 +8,13 @@
 
 #include "lattice_test_support.h"
 
+#include <CGAL/VVM/internal/Edges_in_complex.h>
+
 #include <CGAL/Polygon_mesh_processing/orientation.h>
+
+// the particle engine asks CGAL's polyhedral domains from all threads, any other from one
+static_assert(TLMI::has_thread_safe_inside<Cube_domain>);
+static_assert(!TLMI::has_thread_safe_inside<Implicit_domain>);
 
 // ---------------------------------------------------------------------------------------------
 // lattice_particles_3 on the cube [-1, 1]^3 with the identity field, BCC, 1500 particles,
@@ -449,6 +455,10 @@ void check_cube_complex(const Cube_c3t3& c3t3, const TLM::Lattice_mesh_report& r
     while(++f != end);
     feature_edges_not_on_boundary += boundary_facets != 2;
   }
+  // VVM's list of the complex's edges: the same edges in the same order as CGAL's iterator
+  std::vector<Cube_tr::Edge> iterated;
+  for(auto e = c3t3.edges_in_complex_begin(); e != c3t3.edges_in_complex_end(); ++e) iterated.push_back(*e);
+  VVM_CHECK(CGAL::VVM::internal::edges_in_complex(c3t3) == iterated);
   double least_covered = covered.size() == 12 ? 2. : 0.;
   for(const auto& c : covered) least_covered = std::min(least_covered, c.second);
   std::set<std::array<int, 3>> corners;

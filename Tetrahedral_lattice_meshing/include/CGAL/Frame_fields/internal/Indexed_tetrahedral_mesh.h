@@ -11,6 +11,7 @@
 #define CGAL_FRAME_FIELDS_INTERNAL_INDEXED_TETRAHEDRAL_MESH_H
 
 #include <CGAL/VVM/internal/Eigen_conversion.h>
+#include <CGAL/VVM/internal/Edges_in_complex.h>
 #include <CGAL/VVM/internal/Vertex_numbering.h>
 
 #include <CGAL/Mesh_complex_3_in_triangulation_3.h>
@@ -138,8 +139,8 @@ indexed_mesh(const Mesh_complex_3_in_triangulation_3<Tr, CornerIndex, CurveIndex
     mesh.cells.push_back({{number(c->vertex(0)), number(c->vertex(1)), number(c->vertex(2)), number(c->vertex(3))}});
   for(auto f = c3t3.facets_in_complex_begin(); f != c3t3.facets_in_complex_end(); ++f)
     mesh.boundary_facets.push_back(facet_indices<Tr, Mesh>(*f, number));
-  for(auto e = c3t3.edges_in_complex_begin(); e != c3t3.edges_in_complex_end(); ++e) {
-    const std::size_t a = number(e->first->vertex(e->second)), b = number(e->first->vertex(e->third));
+  for(const auto& e : VVM::internal::edges_in_complex(c3t3)) {
+    const std::size_t a = number(e.first->vertex(e.second)), b = number(e.first->vertex(e.third));
     mesh.feature_edges.push_back({{(std::min)(a, b), (std::max)(a, b)}});
   }
   return mesh;

@@ -12,6 +12,8 @@
 
 #include <CGAL/Tetrahedral_lattice_meshing/internal/Boundary_samples.h>
 #include <CGAL/Tetrahedral_lattice_meshing/internal/Reproducible_sampling.h>
+#include <CGAL/Tetrahedral_lattice_meshing/internal/Thread_safe_inside.h>
+#include <CGAL/VVM/internal/Edges_in_complex.h>
 #include <CGAL/make_mesh_3.h>
 
 #include <CGAL/Mesh_3/Has_features.h>
@@ -98,6 +100,9 @@ public:
 
   const MeshDomain& domain() const { return domain_; }
 
+  /// whether `inside()` may be called from several threads at once
+  static constexpr bool has_thread_safe_inside = internal::has_thread_safe_inside<MeshDomain>;
+
   /// throws unless a point of a grid over the bounding box of `domain` lies inside it: CGAL's
   /// search for the initial points of make_mesh_3 does not end on a domain with no inside (an
   /// implicit function positive everywhere, an image of background only)
@@ -176,11 +181,11 @@ private:
     }
     if(triangles_.empty())
       throw std::invalid_argument("lattice particles: the domain is empty (Mesh_3 found no boundary facet)");
-    for(auto e = c3t3.edges_in_complex_begin(); e != c3t3.edges_in_complex_end(); ++e) {
-      const Curve_index ci = c3t3.curve_index(*e);
+    for(const auto& e : VVM::internal::edges_in_complex(c3t3)) {
+      const Curve_index ci = c3t3.curve_index(e);
       auto it = curve_number.emplace(ci, int(curve_indices_.size()));
       if(it.second) curve_indices_.push_back(ci);
-      const Eigen::Vector3d a = point(e->first->vertex(e->second)), b = point(e->first->vertex(e->third));
+      const Eigen::Vector3d a = point(e.first->vertex(e.second)), b = point(e.first->vertex(e.third));
       if(!this->add_segment(a, b, it.first->second)) continue;
       // the chord's length, signed with the curve's orientation (CGAL 5.5.1's
       // signed_geodesic_distance() can loop forever on some point pairs)

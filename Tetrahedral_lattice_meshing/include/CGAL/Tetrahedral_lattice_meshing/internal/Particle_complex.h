@@ -13,8 +13,10 @@
 #ifndef CGAL_TETRAHEDRAL_LATTICE_MESHING_INTERNAL_PARTICLE_COMPLEX_H
 #define CGAL_TETRAHEDRAL_LATTICE_MESHING_INTERNAL_PARTICLE_COMPLEX_H
 
+#include <CGAL/Tetrahedral_lattice_meshing/internal/Thread_safe_inside.h>
 #include <CGAL/Tetrahedral_lattice_meshing/lattice_particle_types.h>
 #include <CGAL/VVM/internal/Eigen_conversion.h>
+#include <CGAL/VVM/internal/Parallel_for.h>
 
 #include <CGAL/Delaunay_triangulation_3.h>
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
@@ -233,7 +235,12 @@ Complex_report connect_particles(C3T3& c3t3, const MeshDomain& domain, const Bou
   // cells: the subdomain at the centroid, except the flat cells of boundary particles lying
   // on the surface (four particles of a planar patch), whose centroid is on it too
   const auto is_in = domain.is_in_domain_object();
-  for(Cell_handle c : tr.finite_cell_handles()) {
+  std::vector<Cell_handle> cells;
+  for(Cell_handle c : tr.finite_cell_handles()) cells.push_back(c);
+  std::vector<Eigen::Vector3d> centroid(cells.size());
+  std::vector<char> flat_on_surface(cells.size(), 0);
+  VVM::internal::parallel_for_each_index(cells.size(), [&](std::size_t i) {
+    const Cell_handle c = cells[i];
     std::array<Eigen::Vector3d, 4> p;
     bool all_boundary = true;
     for(int k = 0; k < 4; ++k) {
@@ -241,18 +248,30 @@ Complex_report connect_particles(C3T3& c3t3, const MeshDomain& domain, const Bou
       all_boundary = all_boundary && kind(c->vertex(k)) != Particle_kind::FREE;
     }
     const Eigen::Vector3d g = 0.25 * (p[0] + p[1] + p[2] + p[3]);
+    centroid[i] = g;
     if(all_boundary && is_flat_in_field(p)) {
       double longest = 0;
-      for(int i = 0; i < 4; ++i)
-        for(int j = i + 1; j < 4; ++j) longest = (std::max)(longest, (p[i] - p[j]).norm());
-      if(boundary.closest_on_surface(g).distance < 0.05 * longest) continue;
+      for(int a = 0; a < 4; ++a)
+        for(int b = a + 1; b < 4; ++b) longest = (std::max)(longest, (p[a] - p[b]).norm());
+      flat_on_surface[i] = boundary.closest_on_surface(g).distance < 0.05 * longest;
     }
+  });
+  std::vector<Subdomain_index> subdomain(cells.size(), Subdomain_index());
+  auto subdomain_of_cell = [&](std::size_t i) {
+    if(flat_on_surface[i]) return;
+    const Eigen::Vector3d& g = centroid[i];
     const auto s = is_in(typename MeshDomain::Point_3(g[0], g[1], g[2]));
-    if(s && *s != Subdomain_index()) {
-      c3t3.add_to_complex(c, *s);
+    if(s) subdomain[i] = *s;
+  };
+  if constexpr(has_thread_safe_inside<MeshDomain>)
+    VVM::internal::parallel_for_each_index(cells.size(), subdomain_of_cell);
+  else
+    for(std::size_t i = 0; i < cells.size(); ++i) subdomain_of_cell(i);
+  for(std::size_t i = 0; i < cells.size(); ++i)
+    if(subdomain[i] != Subdomain_index()) {
+      c3t3.add_to_complex(cells[i], subdomain[i]);
       ++report.number_of_cells;
     }
-  }
   // Flat cells of boundary particles (four particles of a planar face, or a sliver across
   // a curved boundary) with a facet on the boundary are outside: peel them, layer by layer.
   auto label = [&](const Cell_handle& c) {
@@ -290,14 +309,19 @@ Complex_report connect_particles(C3T3& c3t3, const MeshDomain& domain, const Bou
     report.number_of_cells -= isolated.size();
   }
   // surface facets: between cells of different subdomains (outside included)
-  for(auto f : tr.finite_facets()) {
-    const Cell_handle c = f.first, d = c->neighbor(f.second);
-    if(label(c) == label(d)) continue;
+  std::vector<typename Tr::Facet> surface_facets;
+  for(auto f : tr.finite_facets())
+    if(label(f.first) != label(f.first->neighbor(f.second))) surface_facets.push_back(f);
+  std::vector<int> patch(surface_facets.size());
+  VVM::internal::parallel_for_each_index(surface_facets.size(), [&](std::size_t i) {
+    const auto& f = surface_facets[i];
     Eigen::Vector3d g = Eigen::Vector3d::Zero();
-    for(int k = 1; k <= 3; ++k) g += eig(c->vertex((f.second + k) & 3)) / 3.;
-    c3t3.add_to_complex(f, boundary.patch_indices()[std::size_t(boundary.closest_on_surface(g).feature)]);
-    ++report.number_of_surface_facets;
-  }
+    for(int k = 1; k <= 3; ++k) g += eig(f.first->vertex((f.second + k) & 3)) / 3.;
+    patch[i] = boundary.closest_on_surface(g).feature;
+  });
+  for(std::size_t i = 0; i < surface_facets.size(); ++i)
+    c3t3.add_to_complex(surface_facets[i], boundary.patch_indices()[std::size_t(patch[i])]);
+  report.number_of_surface_facets += surface_facets.size();
   // feature edges: Delaunay edges between sharp-edge or corner particles along a sharp edge
   auto on_feature = [&](Particle_kind k) { return k == Particle_kind::SHARP_EDGE || k == Particle_kind::CORNER; };
   std::map<Vertex_handle, int> curve_of;

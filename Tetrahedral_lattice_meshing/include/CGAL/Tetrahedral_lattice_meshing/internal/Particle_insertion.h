@@ -71,28 +71,34 @@ std::vector<Insertion_candidate> empty_sites(const System& s, double min_distanc
       if(far_enough(c.point, c.stretch)) local[i].push_back(c);
     }
   });
-  std::vector<Insertion_candidate> out;
-  for(auto& site : local)
-    for(auto& c : site) {
-      if(s.boundary() && !s.boundary()->inside(c.point)) { // sequential: the domain's inside test
-        const auto b = s.boundary()->closest_on_surface(c.point);
-        c.point = b.point;
-        c.kind = Particle_kind::BOUNDARY;
-        c.feature = b.feature;
-        c.direction = b.direction;
-        if(s.boundary()->has_sharp_edges()) { // near a sharp edge: on it, as the projection would put it
-          const auto e = s.boundary()->closest_on_sharp_edge(c.point);
-          if((s.B(c.point) * (e.point - c.point)).norm() <= s.lattice().sharp_edge_snap * l) {
-            c.point = e.point;
-            c.kind = Particle_kind::SHARP_EDGE;
-            c.feature = e.feature;
-            c.direction = e.direction;
-          }
-        }
-        if(!far_enough(c.point, c.stretch)) continue;
+  std::vector<Insertion_candidate> sites;
+  for(auto& site : local) sites.insert(sites.end(), site.begin(), site.end());
+  if(!s.boundary()) return sites;
+  const std::vector<char> inside =
+      inside_tests(*s.boundary(), sites.size(), [&](std::size_t k) { return sites[k].point; });
+  std::vector<char> keep(sites.size(), 1);
+  parallel_for_each_index(sites.size(), [&](std::size_t k) {
+    if(inside[k]) return;
+    Insertion_candidate& c = sites[k];
+    const auto b = s.boundary()->closest_on_surface(c.point);
+    c.point = b.point;
+    c.kind = Particle_kind::BOUNDARY;
+    c.feature = b.feature;
+    c.direction = b.direction;
+    if(s.boundary()->has_sharp_edges()) { // near a sharp edge: on it, as the projection would put it
+      const auto e = s.boundary()->closest_on_sharp_edge(c.point);
+      if((s.B(c.point) * (e.point - c.point)).norm() <= s.lattice().sharp_edge_snap * l) {
+        c.point = e.point;
+        c.kind = Particle_kind::SHARP_EDGE;
+        c.feature = e.feature;
+        c.direction = e.direction;
       }
-      out.push_back(c);
     }
+    keep[k] = far_enough(c.point, c.stretch);
+  });
+  std::vector<Insertion_candidate> out;
+  for(std::size_t k = 0; k < sites.size(); ++k)
+    if(keep[k]) out.push_back(sites[k]);
   return out;
 }
 

@@ -64,10 +64,24 @@ struct No_boundary
     double distance = 0;
   };
   bool inside(const Eigen::Vector3d&) const { return true; }
+  static constexpr bool has_thread_safe_inside = true;
   bool has_sharp_edges() const { return false; }
   Closest closest_on_surface(const Eigen::Vector3d&) const { return Closest(); }
   Closest closest_on_sharp_edge(const Eigen::Vector3d&) const { return Closest(); }
 };
+
+/// `boundary.inside()` of `point(0)`, ..., `point(n - 1)`: on all threads where the boundary's
+/// domain allows it, else one after another on this one
+template <class Boundary, class PointOf>
+std::vector<char> inside_tests(const Boundary& boundary, std::size_t n, const PointOf& point)
+{
+  std::vector<char> inside(n);
+  if constexpr(Boundary::has_thread_safe_inside)
+    parallel_for_each_index(n, [&](std::size_t k) { inside[k] = boundary.inside(point(k)); });
+  else
+    for(std::size_t k = 0; k < n; ++k) inside[k] = boundary.inside(point(k));
+  return inside;
+}
 
 /*
  * FrameField: a model of FrameField_3; Boundary: Domain_boundary or No_boundary.
@@ -440,18 +454,23 @@ public:
         clearance[i] = c.distance;
       }
     });
-    // the domain's inside test, sequential (it need not be thread-safe)
-    for(std::size_t i = 0; i < n; ++i) {
-      if(!check_inside[i]) continue;
+    // the domain's inside test (in parallel only where the domain allows it)
+    std::vector<std::size_t> tested;
+    for(std::size_t i = 0; i < n; ++i)
+      if(check_inside[i]) tested.push_back(i);
+    const std::vector<char> inside =
+        inside_tests(*boundary_, tested.size(), [&](std::size_t k) { return points[tested[k]]; });
+    parallel_for_each_index(tested.size(), [&](std::size_t k) {
+      const std::size_t i = tested[k];
       moved[i] = 0;
-      if(boundary_->inside(points[i])) continue;
+      if(inside[k]) return;
       const auto c = boundary_->closest_on_surface(points[i]);
       points[i] = c.point;
       kinds[i] = Particle_kind::BOUNDARY;
       features[i] = c.feature;
       directions[i] = c.direction;
       to_edge(i);
-    }
+    });
   }
 
   /// the GHK energy a particle at `c`, where T stretches by at most `stretch_c`, would have

@@ -122,6 +122,7 @@ public:
 
   /// nothing is inside a surface: a site off it goes onto it
   bool inside(const Eigen::Vector3d&) const { return false; }
+  static constexpr bool has_thread_safe_inside = true;
   /// no volume to sample
   const std::vector<std::array<Eigen::Vector3d, 4>>& cells() const { return no_cells_; }
 
