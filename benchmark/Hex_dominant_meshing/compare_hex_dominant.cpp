@@ -296,7 +296,11 @@ int run(const Options& o)
 
   CGAL::Real_timer timer;
   timer.start();
-  Field field = make_field(o, domain, volume);
+  // the cross field at the uniform size is the one make_hex_dominant_mesh_3() makes when given
+  // none (its boundary sampled beside it): made in the call below, kept here for the statistics
+  const bool packages_field = o.field == "cross" && o.sizing == "uniform";
+  Field field = packages_field ? Field([](const Point_3&) { return Eigen::Matrix3d(Eigen::Matrix3d::Identity()); })
+                               : make_field(o, domain, volume);
   if(o.sizing == "thickness") { // T(x) h(x) / (h's median on the surface): the lattice's spacing follows the size
     const auto sizing = vvm_benchmark::thickness_sizing<K>(surface, 3., 0.3, o.features_angle);
     const auto size = sizing.field;
@@ -305,7 +309,7 @@ int run(const Options& o)
                       const Point_3& p) { return scaled.T(p); });
     model += "_thickness";
   }
-  const double field_time = timer.time();
+  double field_time = timer.time();
   auto B = [&field](const Eigen::Vector3d& x) { return Eigen::Matrix3d(field.B(Point_3(x[0], x[1], x[2]))); };
 
   // the particles and their tets once; the merging once per Q_bound
@@ -338,9 +342,24 @@ int run(const Options& o)
             HDM::parameters::quality_bound(q, HDM::parameters::boundary_distance(o.boundary_distance,
                 HDM::parameters::report(&report,
                     HDM::parameters::tetrahedral_mesh(&tets, CGAL::parameters::random_seed(o.seed).verbose(o.verbose)))))));
+        auto make = [&](const auto& np) {
+          if(!packages_field) return CGAL::make_hex_dominant_mesh_3<C3T3>(domain, field, np);
+          // as CGAL::make_hex_dominant_mesh_3(domain, np) does it, with the field kept
+          CGAL::Real_timer field_timer;
+          field_timer.start();
+          const auto with_ratio = FF::parameters::maximum_size_ratio(o.scale_correction, np);
+          return CGAL::VVM::internal::with_frame_field(domain, HDM::internal::read_hex_dominant_request(with_ratio), with_ratio,
+                                                [&](const auto& made, const CGAL::VVM::internal::Lattice_request& r) {
+            field_time = field_timer.time();
+            const auto cross = std::make_shared<const std::decay_t<decltype(made)>>(made);
+            field = Field([cross](const Point_3& p) { return cross->T(p); });
+            std::cout << "cross field (the packages' own) and the boundary's sampling beside it: " << cross->points().size()
+                      << " vertices, " << field_time << " s\n";
+            return HDM::internal::make_hex_dominant_mesh<C3T3>(domain, made, r, with_ratio);
+          });
+        };
         auto with_levels = [&](const auto& np) {
-          return o.levels < 0 ? CGAL::make_hex_dominant_mesh_3<C3T3>(domain, field, np)
-                              : CGAL::make_hex_dominant_mesh_3<C3T3>(domain, field, TP::multiresolution_levels(o.levels, np));
+          return o.levels < 0 ? make(np) : make(TP::multiresolution_levels(o.levels, np));
         };
         mesh = o.rounds < 0 ? with_levels(np) : with_levels(np.number_of_iterations(o.rounds));
         const double n = double(mesh.points.size());

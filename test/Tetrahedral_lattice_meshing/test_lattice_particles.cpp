@@ -318,7 +318,8 @@ void test_thread_independence()
 }
 
 // ---------------------------------------------------------------------------------------------
-// 5a. Determinism: lattice_particles_3, make_lattice_mesh_3 and generate_cross_field_3 on the
+// 5a. Determinism: lattice_particles_3 (with a field, and with the polyhedral sphere's cross field,
+// made beside the boundary's sampling), make_lattice_mesh_3 and generate_cross_field_3 on the
 // unit sphere give bit-identical outputs with 1, 2 and 4 threads, and again after another run
 // in a fragmented heap (the objects of the run then lie elsewhere, in another address order).
 
@@ -336,6 +337,21 @@ void test_determinism()
   vvm_test::check_deterministic("lattice_particles_3, sphere",
       [&](int threads) { return vvm_test::particles_hash(particles(threads, 1200)); },
       [&] { particles(2, 900); });
+
+  // without a field, on a polyhedral domain: the packages' cross field, the boundary sampled
+  // beside it (by TBB's other thread, or by this one with 1 thread)
+  Surface_mesh sphere966;
+  VVM_CHECK(CGAL::IO::read_polygon_mesh(data_file("sphere966.off"), sphere966));
+  const Cube_domain polyhedral(sphere966);
+  VVM_CHECK((TLMI::Domain_boundary<Cube_domain, K>::may_sample_beside_other_meshing(polyhedral)));
+  VVM_CHECK(!(TLMI::Domain_boundary<Implicit_domain, K>::may_sample_beside_other_meshing(domain)));
+  auto default_field_particles = [&](int threads, std::size_t n) {
+    return CGAL::lattice_particles_3(polyhedral, TLM::parameters::number_of_particles(n,
+        TLM::parameters::number_of_threads(threads, CGAL::parameters::random_seed(5u))));
+  };
+  vvm_test::check_deterministic("lattice_particles_3, polyhedral sphere, its cross field",
+      [&](int threads) { return vvm_test::particles_hash(default_field_particles(threads, 400)); },
+      [&] { default_field_particles(2, 300); });
 
   auto mesh = [&](int threads, double l) {
     return CGAL::make_lattice_mesh_3<Sphere_c3t3>(domain, Constant_field(),

@@ -21,13 +21,17 @@
 
 #include <Eigen/Eigenvalues>
 
+#include <tbb/task_group.h>
+
 #include <unistd.h>
 
+#include <any>
 #include <cmath>
 #include <iomanip>
 #include <iostream>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -94,7 +98,7 @@ template <class MeshDomain>
 struct Particles_in_domain
 {
   typedef typename MeshDomain::R K;
-  std::unique_ptr<Domain_boundary<MeshDomain, K>> boundary;
+  std::shared_ptr<Domain_boundary<MeshDomain, K>> boundary;
   Lattice_particles_3<typename K::Point_3> particles;
 };
 
@@ -113,6 +117,10 @@ struct Lattice_request
   /// the generated cross field's scale correction (`Frame_fields::scale_corrected_frame_field()`):
   /// the largest ratio of two scales; 1 for none
   double maximum_scale_ratio = 1;
+  /// the domain's boundary, sampled before the particles (beside the generated cross field:
+  /// `with_frame_field()`), as a `std::shared_ptr<Domain_boundary<MeshDomain, K>>`; empty: the
+  /// particles sample it
+  std::any sampled_boundary;
 };
 
 /// (`surface`: for `make_lattice_surface_mesh()`, whose lattice is the hexagonal one, which the
@@ -218,15 +226,20 @@ Particles_in_domain<MeshDomain> lattice_particles(const MeshDomain& domain, cons
     }
   }
   const double l0 = edge_length_from_box(domain, Bc.determinant(), r);
-  // the boundary sampled at the mean spacing, as accurate as the shortest axis needs
-  Eigen::JacobiSVD<Eigen::Matrix3d> svd(Tc);
-  const double spacing = l0 * std::cbrt(std::abs(Tc.determinant())), finest = l0 * svd.singularValues().minCoeff();
 
   Particles_in_domain<MeshDomain> out;
   CGAL::Real_timer timer;
   timer.start();
   const auto thread_limit = VVM::internal::thread_limit(r.threads);
-  out.boundary = std::make_unique<Domain_boundary<MeshDomain, K>>(domain, spacing, finest);
+  typedef std::shared_ptr<Domain_boundary<MeshDomain, K>> Sampled_boundary;
+  if(const Sampled_boundary* sampled = std::any_cast<Sampled_boundary>(&r.sampled_boundary); sampled && *sampled)
+    out.boundary = *sampled;
+  else {
+    // the boundary sampled at the mean spacing, as accurate as the shortest axis needs
+    Eigen::JacobiSVD<Eigen::Matrix3d> svd(Tc);
+    const double spacing = l0 * std::cbrt(std::abs(Tc.determinant())), finest = l0 * svd.singularValues().minCoeff();
+    out.boundary = std::make_shared<Domain_boundary<MeshDomain, K>>(domain, spacing, finest);
+  }
   const Domain_measures measures = domain_measures<Domain_boundary<MeshDomain, K>, FrameField, Point_3>(*out.boundary, field);
   if(!(measures.volume > 0)) fail("the domain is empty (no volume)");
   if(r.options.verbose) std::cerr << "  lattice: the boundary sampled and the domain measured, " << timer.time() << " s\n";
@@ -303,6 +316,17 @@ default_frame_field(const MeshDomain& domain, const Lattice_request& r)
   return domain_cross_field(domain, size, r.options.maximum_running_time, r.maximum_scale_ratio);
 }
 
+/// the boundary of `domain` sampled for the particles of `r` in the default field: its frames
+/// are rotations, scaled by the scale correction only (within `r.maximum_scale_ratio`), so the
+/// boundary is sampled at the mean spacing, with a chordal error of 2% of it, without the field
+template <class MeshDomain>
+std::shared_ptr<Domain_boundary<MeshDomain, typename MeshDomain::R>>
+boundary_for_default_field(const MeshDomain& domain, const Lattice_request& r)
+{
+  const double spacing = edge_length_from_box(domain, 1., r);
+  return std::make_shared<Domain_boundary<MeshDomain, typename MeshDomain::R>>(domain, spacing, spacing);
+}
+
 /// `r` with the time `limit` leaves as its time limit: what the stages after the field get
 inline Lattice_request with_time_left(Lattice_request r, const VVM::internal::Time_limit& limit)
 {
@@ -311,7 +335,9 @@ inline Lattice_request with_time_left(Lattice_request r, const VVM::internal::Ti
 }
 
 /// `run(field, request)` with the frame field of `np` (`frame_field`), or, without one, with
-/// the domain's cross field, made within the time limit of `r` (the rest left to `run`)
+/// the domain's cross field, made within the time limit of `r` (the rest left to `run`); the
+/// boundary's sampling for the particles then runs beside it (in `request.sampled_boundary`), on
+/// another thread where the domain allows two Mesh_3 runs at once
 template <class MeshDomain, class NamedParameters, class Run>
 decltype(auto) with_frame_field(const MeshDomain& domain, const Lattice_request& r, const NamedParameters& np,
                                 const Run& run)
@@ -321,8 +347,29 @@ decltype(auto) with_frame_field(const MeshDomain& domain, const Lattice_request&
     return run(given, r);
   else {
     const VVM::internal::Time_limit time_limit(r.options.maximum_running_time);
-    const auto field = default_frame_field(domain, r);
-    return run(field, with_time_left(r, time_limit));
+    const auto thread_limit = VVM::internal::thread_limit(r.threads);
+    std::shared_ptr<Domain_boundary<MeshDomain, typename MeshDomain::R>> boundary;
+    std::optional<decltype(default_frame_field(domain, r))> field;
+    if(Domain_boundary<MeshDomain, typename MeshDomain::R>::may_sample_beside_other_meshing(domain)) {
+      tbb::task_group sampling; // run by a free thread, or by this one when it waits
+      sampling.run([&] { boundary = boundary_for_default_field(domain, r); });
+      try {
+        field.emplace(default_frame_field(domain, r));
+      } catch(...) {
+        try {
+          sampling.wait();
+        } catch(...) { // the field's error is the one reported
+        }
+        throw;
+      }
+      sampling.wait();
+    } else {
+      field.emplace(default_frame_field(domain, r));
+      boundary = boundary_for_default_field(domain, r);
+    }
+    Lattice_request fr = with_time_left(r, time_limit);
+    fr.sampled_boundary = boundary;
+    return run(*field, fr);
   }
 }
 
@@ -356,7 +403,9 @@ particles_of_request(const MeshDomain& domain, const FrameField& field, const La
  *
  * The domain's boundary, feature curves and corners are those `make_mesh_3()` finds for it
  * (sampled at about the mean particle spacing, with a chordal error of 2% of the spacing along
- * the frame's shortest axis), so any `MeshDomain_3`
+ * the frame's shortest axis; of the mean spacing with the generated cross field, whose frames are
+ * rotations scaled by the scale correction only, and the sampling then runs beside the field,
+ * on another thread for CGAL's polyhedral domains), so any `MeshDomain_3`
  * works: polyhedral (with features), implicit, labelled (several subdomains: their
  * interfaces are boundaries too). The lattice's edge length \f$ l^* \f$ is measured in the
  * imagined space, where the field's frames \f$ T \f$ are the identity: particle \f$ p_i \f$'s

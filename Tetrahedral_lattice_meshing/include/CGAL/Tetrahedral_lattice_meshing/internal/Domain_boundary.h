@@ -103,6 +103,16 @@ public:
   /// whether `inside()` may be called from several threads at once
   static constexpr bool has_thread_safe_inside = internal::has_thread_safe_inside<MeshDomain>;
 
+  /// whether `domain` may be sampled while another thread meshes it with Mesh_3: CGAL's
+  /// polyhedral domains, whose trees are built under a lock and whose initial points come from a
+  /// generator of each call's own (unless one was given with `set_random_generator()`, which
+  /// Polyhedral_mesh_domain_3 does not let us see: both runs then draw from it), and no domain
+  /// with a generator we can see (a labelled domain's is shared by every call)
+  static bool may_sample_beside_other_meshing(const MeshDomain& domain)
+  {
+    return has_thread_safe_inside && Domain_random_generator<MeshDomain>::of(domain) == nullptr;
+  }
+
   /// throws unless a point of a grid over the bounding box of `domain` lies inside it: CGAL's
   /// search for the initial points of make_mesh_3 does not end on a domain with no inside (an
   /// implicit function positive everywhere, an image of background only)
