@@ -104,13 +104,18 @@ public:
   static constexpr bool has_thread_safe_inside = internal::has_thread_safe_inside<MeshDomain>;
 
   /// whether `domain` may be sampled while another thread meshes it with Mesh_3: CGAL's
-  /// polyhedral domains, whose trees are built under a lock and whose initial points come from a
-  /// generator of each call's own (unless one was given with `set_random_generator()`, which
-  /// Polyhedral_mesh_domain_3 does not let us see: both runs then draw from it), and no domain
+  /// polyhedral domains, whose trees are built under a lock, whose cache of the last intersection
+  /// query is per thread when CGAL is linked with TBB (shared otherwise), and whose initial points
+  /// come from a generator of each call's own (unless one was given with `set_random_generator()`,
+  /// which Polyhedral_mesh_domain_3 does not let us see: both runs then draw from it); no domain
   /// with a generator we can see (a labelled domain's is shared by every call)
   static bool may_sample_beside_other_meshing(const MeshDomain& domain)
   {
+#ifdef CGAL_LINKED_WITH_TBB
     return has_thread_safe_inside && Domain_random_generator<MeshDomain>::of(domain) == nullptr;
+#else
+    return (void)domain, false;
+#endif
   }
 
   /// throws unless a point of a grid over the bounding box of `domain` lies inside it: CGAL's
