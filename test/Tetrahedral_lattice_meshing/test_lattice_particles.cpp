@@ -11,10 +11,15 @@
 #include <CGAL/VVM/internal/Edges_in_complex.h>
 
 #include <CGAL/Polygon_mesh_processing/orientation.h>
+#include <CGAL/Polyhedral_complex_mesh_domain_3.h>
 
 // the particle engine asks CGAL's polyhedral domains from all threads, any other from one
 static_assert(TLMI::has_thread_safe_inside<Cube_domain>);
 static_assert(!TLMI::has_thread_safe_inside<Implicit_domain>);
+// two Mesh_3 runs may share a polyhedral domain, not a complex (its first run detects its borders)
+static_assert(TLMI::may_be_meshed_concurrently<Cube_domain>);
+static_assert(!TLMI::may_be_meshed_concurrently<CGAL::Polyhedral_complex_mesh_domain_3<K>>);
+static_assert(!TLMI::may_be_meshed_concurrently<Implicit_domain>);
 
 // ---------------------------------------------------------------------------------------------
 // lattice_particles_3 on the cube [-1, 1]^3 with the identity field, BCC, 1500 particles,
@@ -380,6 +385,33 @@ void test_determinism()
   vvm_test::check_deterministic("generate_cross_field_3, sphere",
       [&](int threads) { return vvm_test::frame_field_hash(field(threads, input).field); },
       [&] { field(2, other_input); });
+}
+
+// run_beside(), which samples the boundary beside the cross field: both jobs run, with 1 and 2
+// threads; the main job's exception is the one thrown, else the other's
+void test_run_beside()
+{
+  for(std::size_t threads : {std::size_t(1), std::size_t(2)}) {
+    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
+    int beside = 0, main = 0;
+    CGAL::VVM::internal::run_beside([&] { beside = 1; }, [&] { main = 2; });
+    VVM_CHECK(beside == 1 && main == 2);
+    std::string caught;
+    try {
+      CGAL::VVM::internal::run_beside([] { throw std::runtime_error("beside"); }, [&] { main = 3; });
+    } catch(const std::runtime_error& e) {
+      caught = e.what();
+    }
+    VVM_CHECK(caught == "beside" && main == 3);
+    caught.clear();
+    try {
+      CGAL::VVM::internal::run_beside([] { throw std::runtime_error("beside"); },
+                                      [] { throw std::runtime_error("main"); });
+    } catch(const std::runtime_error& e) {
+      caught = e.what();
+    }
+    VVM_CHECK_EQUAL(caught, std::string("main"));
+  }
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -808,6 +840,7 @@ int main(int argc, char** argv)
       {"domain_volume_fraction", test_domain_volume_fraction},
       {"thread_independence", test_thread_independence},
       {"determinism", test_determinism},
+      {"run_beside", test_run_beside},
       {"multiresolution_choice", test_multiresolution_choice},
       {"polishing_bound", test_polishing_bound},
       {"lattice_mesh_on_cube", test_lattice_mesh_on_cube},

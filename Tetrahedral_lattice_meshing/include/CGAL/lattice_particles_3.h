@@ -13,6 +13,7 @@
 #include <CGAL/Tetrahedral_lattice_meshing/Lattice.h>
 #include <CGAL/Tetrahedral_lattice_meshing/lattice_particle_types.h>
 #include <CGAL/Tetrahedral_lattice_meshing/parameters.h>
+#include <CGAL/VVM/internal/Parallel_for.h>
 #include <CGAL/VVM/internal/Stopping.h>
 #include <CGAL/VVM/internal/Thread_limit.h>
 
@@ -20,8 +21,6 @@
 #include <CGAL/Real_timer.h>
 
 #include <Eigen/Eigenvalues>
-
-#include <tbb/task_group.h>
 
 #include <unistd.h>
 
@@ -242,7 +241,10 @@ Particles_in_domain<MeshDomain> lattice_particles(const MeshDomain& domain, cons
   }
   const Domain_measures measures = domain_measures<Domain_boundary<MeshDomain, K>, FrameField, Point_3>(*out.boundary, field);
   if(!(measures.volume > 0)) fail("the domain is empty (no volume)");
-  if(r.options.verbose) std::cerr << "  lattice: the boundary sampled and the domain measured, " << timer.time() << " s\n";
+  if(r.options.verbose)
+    std::cerr << "  lattice: " << (r.sampled_boundary.has_value() ? "the domain measured (its boundary sampled beside the field), "
+                                                                    : "the boundary sampled and the domain measured, ")
+              << timer.time() << " s\n";
   const double l = r.has_length ? r.edge_length : lattice_edge_length(r.lattice, measures, r.number_of_particles);
   if(!(l < std::numeric_limits<double>::infinity())) fail("too few particles for the domain's corners");
   const double n = lattice_particle_count(r.lattice, measures, l);
@@ -350,20 +352,10 @@ decltype(auto) with_frame_field(const MeshDomain& domain, const Lattice_request&
     const auto thread_limit = VVM::internal::thread_limit(r.threads);
     std::shared_ptr<Domain_boundary<MeshDomain, typename MeshDomain::R>> boundary;
     std::optional<decltype(default_frame_field(domain, r))> field;
-    if(Domain_boundary<MeshDomain, typename MeshDomain::R>::may_sample_beside_other_meshing(domain)) {
-      tbb::task_group sampling; // run by a free thread, or by this one when it waits
-      sampling.run([&] { boundary = boundary_for_default_field(domain, r); });
-      try {
-        field.emplace(default_frame_field(domain, r));
-      } catch(...) {
-        try {
-          sampling.wait();
-        } catch(...) { // the field's error is the one reported
-        }
-        throw;
-      }
-      sampling.wait();
-    } else {
+    if(Domain_boundary<MeshDomain, typename MeshDomain::R>::may_sample_beside_other_meshing(domain))
+      VVM::internal::run_beside([&] { boundary = boundary_for_default_field(domain, r); },
+                                [&] { field.emplace(default_frame_field(domain, r)); });
+    else {
       field.emplace(default_frame_field(domain, r));
       boundary = boundary_for_default_field(domain, r);
     }
@@ -405,7 +397,7 @@ particles_of_request(const MeshDomain& domain, const FrameField& field, const La
  * (sampled at about the mean particle spacing, with a chordal error of 2% of the spacing along
  * the frame's shortest axis; of the mean spacing with the generated cross field, whose frames are
  * rotations scaled by the scale correction only, and the sampling then runs beside the field,
- * on another thread for CGAL's polyhedral domains), so any `MeshDomain_3`
+ * on another thread for CGAL's polyhedral domains but complexes), so any `MeshDomain_3`
  * works: polyhedral (with features), implicit, labelled (several subdomains: their
  * interfaces are boundaries too). The lattice's edge length \f$ l^* \f$ is measured in the
  * imagined space, where the field's frames \f$ T \f$ are the identity: particle \f$ p_i \f$'s

@@ -48,7 +48,7 @@ struct Lattice_mesh_report
 {
   std::size_t number_of_particles = 0;
   double edge_length = 0;             ///< \f$ l^* \f$
-  double particle_time = 0;           ///< seconds: boundary sampling and particle optimization
+  double particle_time = 0;           ///< seconds: boundary sampling (but beside the generated cross field) and particle optimization
   double connection_time = 0;         ///< seconds: the complex made of the particles
   double gsm_time = 0;                ///< seconds: the last stage (`Lattice_mesh_optimization`)
   std::size_t number_of_feature_edges = 0;

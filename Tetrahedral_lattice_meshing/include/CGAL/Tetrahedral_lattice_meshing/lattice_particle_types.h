@@ -58,7 +58,7 @@ struct Lattice_particles_3
   double energy = 0;          ///< the final GHK energy per particle
   int number_of_rounds = 0;   ///< rounds run, all levels together (of the run kept)
   int multiresolution_levels = 0; ///< the levels of the run kept
-  double time = 0;            ///< seconds, boundary sampling included
+  double time = 0;            ///< seconds, boundary sampling included (but the generated cross field's, made beside the field)
   bool time_limit_reached = false; ///< `maximum_running_time` stopped the rounds
   bool stopped_by_visitor = false; ///< the visitor returned `false`: the rounds stopped there
 

@@ -2,13 +2,15 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // The parallel loops of the three packages, in one place: TBB's parallel_for over index
-// ranges, or, in the ThreadSanitizer build, the same chunks on std::threads.
+// ranges, or, in the ThreadSanitizer build, the same chunks on std::threads; and two jobs side by
+// side (a TBB task, or a std::thread there).
 
 #ifndef CGAL_VVM_INTERNAL_PARALLEL_FOR_H
 #define CGAL_VVM_INTERNAL_PARALLEL_FOR_H
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/task_group.h>
 
 #ifdef CGAL_VVM_PARALLEL_FOR_STD_THREADS
 // the ThreadSanitizer build's loops
@@ -21,6 +23,7 @@
 #endif
 
 #include <cstddef>
+#include <exception>
 
 namespace CGAL {
 namespace VVM {
@@ -71,6 +74,52 @@ void parallel_for_each_index(std::size_t n, const F& f, std::size_t grain = 256)
   parallel_for_ranges(n, grain, [&](const Index_range& r) {
     for(std::size_t i = r.begin(); i != r.end(); ++i) f(i);
   });
+}
+
+/// `beside()` on another thread while this one runs `main()`; both have ended when it returns.
+/// A TBB task: with no free worker (one thread allowed, say) this thread runs it once `main()`
+/// is done. An exception of `main()` is the one thrown (`beside()` is then cancelled if it has not
+/// started, and its own exception dropped), else one of `beside()`.
+template <class Beside, class Main>
+void run_beside(const Beside& beside, const Main& main)
+{
+#ifndef CGAL_VVM_PARALLEL_FOR_STD_THREADS
+  tbb::task_group group;
+  group.run(beside);
+  try {
+    main();
+  } catch(...) {
+    group.cancel();
+    try {
+      group.wait();
+    } catch(...) {
+    }
+    throw;
+  }
+  group.wait();
+#else
+  if(tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism) < 2) {
+    main();
+    beside();
+    return;
+  }
+  std::exception_ptr error;
+  std::thread other([&] {
+    try {
+      beside();
+    } catch(...) {
+      error = std::current_exception();
+    }
+  });
+  try {
+    main();
+  } catch(...) {
+    other.join();
+    throw;
+  }
+  other.join();
+  if(error) std::rethrow_exception(error);
+#endif
 }
 
 } // namespace internal

@@ -104,15 +104,16 @@ public:
   static constexpr bool has_thread_safe_inside = internal::has_thread_safe_inside<MeshDomain>;
 
   /// whether `domain` may be sampled while another thread meshes it with Mesh_3: CGAL's
-  /// polyhedral domains, whose trees are built under a lock, whose cache of the last intersection
-  /// query is per thread when CGAL is linked with TBB (shared otherwise), and whose initial points
-  /// come from a generator of each call's own (unless one was given with `set_random_generator()`,
-  /// which Polyhedral_mesh_domain_3 does not let us see: both runs then draw from it); no domain
-  /// with a generator we can see (a labelled domain's is shared by every call)
+  /// polyhedral domains but complexes (`may_be_meshed_concurrently`), whose trees are built under
+  /// a lock, whose cache of the last intersection query is per thread when CGAL is linked with
+  /// TBB (shared otherwise), and whose initial points come from a generator of each call's own
+  /// (unless one was given with `set_random_generator()`, which Polyhedral_mesh_domain_3 does not
+  /// let us see: both runs then draw from it); no domain with a generator we can see (a labelled
+  /// domain's is shared by every call)
   static bool may_sample_beside_other_meshing(const MeshDomain& domain)
   {
 #ifdef CGAL_LINKED_WITH_TBB
-    return has_thread_safe_inside && Domain_random_generator<MeshDomain>::of(domain) == nullptr;
+    return may_be_meshed_concurrently<MeshDomain> && Domain_random_generator<MeshDomain>::of(domain) == nullptr;
 #else
     return (void)domain, false;
 #endif

@@ -62,7 +62,7 @@ struct Lattice_tetrahedralization_report
 {
   std::size_t number_of_particles = 0;
   double edge_length = 0;                        ///< \f$ l^* \f$
-  double particle_time = 0;                      ///< seconds: boundary sampling and particle optimization
+  double particle_time = 0;                      ///< seconds: boundary sampling (but beside the generated cross field) and particle optimization
   int number_of_particle_rounds = 0;             ///< the particles' rounds, all levels together
   double connection_time = 0;                    ///< seconds: connection, boundary refinement and flips
   std::size_t number_of_projected_particles = 0; ///< free particles the complex left on its boundary, put onto it
